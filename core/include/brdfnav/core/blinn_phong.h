@@ -1,0 +1,43 @@
+// Blinn-Phong lobe: (n + 2) / (8 pi) cos_h^n (shared/reference/brdf-models.md).
+#pragma once
+
+#include <brdfnav/core/microfacet.h>
+#include <brdfnav/core/params.h>
+
+#include <array>
+#include <span>
+
+namespace brdfnav {
+
+struct BlinnPhong {
+  static constexpr std::string_view kName = "blinn_phong";
+  static constexpr std::string_view kTitle = "Blinn-Phong";
+  static constexpr std::array<ParamSpec, 1> kParams{{
+      {"n", "1", "exponent of cos(theta_h); larger is sharper", 0.0, 1e6, 100.0, 2.0, 80000.0, 15,
+       Scale::log},
+  }};
+
+  double n;
+
+  explicit BlinnPhong(std::span<const double> p) : n(p[0]) {}
+
+  Rgb eval(const Vec3& wi, const Vec3& wo) const {
+    if (wi.z() <= 0 || wo.z() <= 0) return Rgb::Zero();
+    const auto h = half_vector(wi, wo);
+    if (!h) return Rgb::Zero();
+    return Rgb::Constant((n + 2) / (8 * kPi) * std::pow(std::max(h->z(), 0.0), n));
+  }
+  std::optional<Vec3> sample(const Vec3& wo, const Vec2& u) const {
+    return reflect_about_half(wo, sample_cos_power(u, n));
+  }
+  double pdf(const Vec3& wi, const Vec3& wo) const {
+    if (wi.z() <= 0 || wo.z() <= 0) return 0.0;
+    const auto h = half_vector(wi, wo);
+    if (!h) return 0.0;
+    return half_to_incident_pdf(cos_power_pdf(h->z(), n), wo, *h);
+  }
+  // With the (n+2)/(8 pi) factor the albedo is close to 1 at normal incidence for large n.
+  double albedo_hint(const Vec3& /*wo*/) const { return 1.0; }
+};
+
+}  // namespace brdfnav

@@ -1,0 +1,67 @@
+// Microfacet math shared by the half-vector lobes (Blinn-Phong, Ward, Cook-Torrance, He).
+#pragma once
+
+#include <brdfnav/core/math.h>
+
+#include <optional>
+
+namespace brdfnav {
+
+// Normalised half vector of two directions in the upper hemisphere; nullopt when degenerate.
+inline std::optional<Vec3> half_vector(const Vec3& wi, const Vec3& wo) {
+  const Vec3 h = wi + wo;
+  const double len2 = h.squaredNorm();
+  if (len2 < 1e-24) return std::nullopt;
+  return h / std::sqrt(len2);
+}
+
+// Reflects wo about a sampled half vector h; nullopt when wo is on the back of h or the result
+// points below the horizon (the sample is then lost, which pdf() accounts for by only giving
+// density to reachable directions).
+inline std::optional<Vec3> reflect_about_half(const Vec3& wo, const Vec3& h) {
+  if (wo.dot(h) <= 0) return std::nullopt;
+  const Vec3 wi = reflect(wo, h);
+  if (wi.z() <= 0) return std::nullopt;
+  return wi;
+}
+
+// Jacobian from a half-vector density to a density over wi: dw_h / dw_i = 1 / (4 |wo.h|).
+inline double half_to_incident_pdf(double pdf_h, const Vec3& wo, const Vec3& h) {
+  const double wo_h = wo.dot(h);
+  return wo_h > 0 ? pdf_h / (4.0 * wo_h) : 0.0;
+}
+
+// Beckmann distribution normalised so that integral D cos_h dw_h = 1 (slope RMS m).
+inline double beckmann_d(double cos_h, double m) {
+  if (cos_h <= 0) return 0.0;
+  const double c2 = cos_h * cos_h;
+  const double tan2 = (1.0 - c2) / c2;
+  return std::exp(-tan2 / (m * m)) / (kPi * m * m * c2 * c2);
+}
+
+// Samples h with density D(h) cos_h for the Beckmann distribution.
+inline Vec3 sample_beckmann(const Vec2& u, double m) {
+  const double tan2 = -m * m * std::log1p(-u[0]);
+  const double cos_h = 1.0 / std::sqrt(1.0 + tan2);
+  const double sin_h = safe_sqrt(1.0 - cos_h * cos_h);
+  return spherical_direction(sin_h, cos_h, 2 * kPi * u[1]);
+}
+
+// Schlick's approximation of Fresnel reflectance.
+inline double fresnel_schlick(double cos_theta, double f0) {
+  const double k = 1.0 - std::clamp(cos_theta, 0.0, 1.0);
+  const double k2 = k * k;
+  return f0 + (1.0 - f0) * k2 * k2 * k;
+}
+
+// Exact unpolarised Fresnel reflectance of a dielectric with real relative index eta > 1.
+inline double fresnel_dielectric(double cos_theta, double eta) {
+  const double c = std::clamp(cos_theta, 0.0, 1.0);
+  const double g = safe_sqrt(eta * eta + c * c - 1.0);
+  const double gmc = g - c, gpc = g + c;
+  if (gpc <= 0) return 1.0;
+  const double a = (c * gpc - 1.0) / (c * gmc + 1.0);
+  return 0.5 * (gmc * gmc) / (gpc * gpc) * (1.0 + a * a);
+}
+
+}  // namespace brdfnav
