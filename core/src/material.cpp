@@ -1,5 +1,6 @@
 #include <brdfnav/core/material.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <sstream>
@@ -93,11 +94,13 @@ Material parse_material_spec(std::string_view spec) {
   const ModelInfo* info = find_model(model_name);
   if (!info) {
     std::string known;
-    for (const ModelInfo& mi : models()) known += (known.empty() ? "" : ", ") + std::string(mi.name);
+    for (const ModelInfo& mi : models())
+      known += (known.empty() ? "" : ", ") + std::string(mi.name);
     throw MaterialError("unknown model '" + std::string(model_name) + "' (known: " + known + ")");
   }
   Material m = default_material(info->id);
   std::string_view rest = colon == std::string_view::npos ? "" : spec.substr(colon + 1);
+  std::vector<std::string_view> seen;
   while (!trim(rest).empty()) {
     const std::size_t comma = rest.find(',');
     const std::string_view item = rest.substr(0, comma);
@@ -106,6 +109,9 @@ Material parse_material_spec(std::string_view spec) {
     if (eq == std::string_view::npos)
       throw MaterialError("'" + std::string(trim(item)) + "': expected key=value");
     const std::string_view key = trim(item.substr(0, eq)), value = trim(item.substr(eq + 1));
+    if (std::find(seen.begin(), seen.end(), key) != seen.end())
+      throw MaterialError("key '" + std::string(key) + "' is given twice");
+    seen.push_back(key);
     if (key == "rho_d") {
       m.rho_d = parse_colour(value, key);
     } else if (key == "rho_s") {

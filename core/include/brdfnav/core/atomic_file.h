@@ -1,0 +1,34 @@
+// Writing outputs so that nothing is ever half-written: write a temporary file beside the target,
+// then rename it over the target. A failure or a crash leaves the old file (or no file).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace brdfnav {
+
+// A temporary path beside `target`; commit() renames it onto the target, and the destructor
+// removes the temporary if commit() was never reached. For writers that take a path (OIIO).
+class AtomicOutput {
+ public:
+  explicit AtomicOutput(std::filesystem::path target);
+  ~AtomicOutput();
+  AtomicOutput(const AtomicOutput&) = delete;
+  AtomicOutput& operator=(const AtomicOutput&) = delete;
+
+  // Where to write. Keeps the target's extension, so format detection by name still works.
+  const std::filesystem::path& temp_path() const { return temp_; }
+  const std::filesystem::path& target() const { return target_; }
+  // Renames the temporary onto the target; throws std::runtime_error naming the target.
+  void commit();
+
+ private:
+  std::filesystem::path target_, temp_;
+  bool committed_ = false;
+};
+
+// Writes `contents` to `target` atomically; throws std::runtime_error naming the file.
+void write_file_atomic(const std::filesystem::path& target, std::string_view contents);
+
+}  // namespace brdfnav

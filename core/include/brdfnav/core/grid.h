@@ -1,0 +1,49 @@
+// A model's parameter grid (the cartesian product of its parameters' grid nodes) and multilinear
+// interpolation over it in each parameter's own scale (log or linear, as the table says).
+#pragma once
+
+#include <brdfnav/core/params.h>
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace brdfnav {
+
+class ParamGrid {
+ public:
+  explicit ParamGrid(std::span<const ParamSpec> specs);
+
+  std::size_t dimensions() const { return axes_.size(); }
+  std::size_t node_count() const { return node_count_; }
+  const std::vector<double>& axis(std::size_t d) const { return axes_[d]; }
+  std::span<const ParamSpec> specs() const { return specs_; }
+
+  // Node index of a multi-index (first parameter fastest) and back.
+  std::size_t node_index(std::span<const std::size_t> multi) const;
+  std::vector<std::size_t> multi_index(std::size_t node) const;
+  // Parameter values at a node, in table order.
+  std::vector<double> node_values(std::size_t node) const;
+
+  // Continuous grid coordinate of `value` on axis d: i + t means t of the way from node i to
+  // node i + 1 in the parameter's scale; values outside the grid are clamped to its ends.
+  double grid_coordinate(std::size_t d, double value) const;
+  // The inverse of grid_coordinate for coordinates in [0, size - 1].
+  double value_at(std::size_t d, double coordinate) const;
+
+  struct Corner {
+    std::size_t node;
+    double weight;
+  };
+  // The up to 2^d nodes and weights (summing to 1) that multilinearly interpolate at `values`;
+  // corners with zero weight are left out.
+  std::vector<Corner> corners(std::span<const double> values) const;
+
+ private:
+  std::span<const ParamSpec> specs_;
+  std::vector<std::vector<double>> axes_;
+  std::vector<std::size_t> strides_;
+  std::size_t node_count_ = 1;
+};
+
+}  // namespace brdfnav

@@ -1,0 +1,44 @@
+// The material file format (schema key `brdfnav_material: 1`), read and written with yaml-cpp.
+// Errors are MaterialError with "FILE:LINE: key: what is wrong".
+#pragma once
+
+#include <brdfnav/core/material.h>
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace YAML {
+class Node;
+}
+
+namespace brdfnav {
+
+inline constexpr int kMaterialSchemaVersion = 1;
+
+// A material file that could not be read at all (missing, a directory, unreadable), as opposed to
+// one whose contents are wrong. Lets callers such as the C ABI report an I/O failure.
+class MaterialFileError : public MaterialError {
+ public:
+  using MaterialError::MaterialError;
+};
+
+// Parses a whole YAML document; `source` names it in error messages (a path or "<stdin>").
+Material parse_material_yaml(std::string_view text, std::string_view source);
+Material read_material_yaml(const std::filesystem::path& path);
+
+// Reads the material mapping of a larger document (the `material:` of a neighbour list, an
+// export's top level). `schema_key_required` says whether `brdfnav_material` must be present.
+Material material_from_node(const YAML::Node& node, std::string_view source,
+                            bool schema_key_required);
+
+// The YAML text of a material, with round-trip precision.
+std::string material_to_yaml(const Material& m);
+// Written atomically (temporary file, then rename).
+void write_material_yaml(const std::filesystem::path& path, const Material& m);
+
+// What every `--material` option accepts: an existing file (or a *.yaml / *.yml path) is read
+// as YAML, anything else is parsed as an inline spec `model:key=value,...`.
+Material load_material(std::string_view path_or_spec);
+
+}  // namespace brdfnav

@@ -1,0 +1,103 @@
+#include "app/cli_runner.h"
+
+#include <brdfnav/core/material.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+namespace brdfnav::test {
+namespace {
+
+Rgb parse_rgb(const std::string& text) {
+  Rgb v;
+  std::istringstream in(text);
+  in >> v[0] >> v[1] >> v[2];
+  EXPECT_TRUE(in) << "not three numbers: " << text;
+  return v;
+}
+
+TEST(CliEval, MatchesTheCoreClosure) {
+  const std::string spec = "ward:alpha_x=0.1,alpha_y=0.05,rho_d=0.2/0.3/0.4,rho_s=0.04";
+  const auto r = run_cli("eval --material " + spec + " --wi 0,0.5,1 --wo 0.3,0,1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Closure c = make_closure(parse_material_spec(spec));
+  const Rgb expected = c.eval(Vec3(0, 0.5, 1).normalized(), Vec3(0.3, 0, 1).normalized());
+  const Rgb got = parse_rgb(r.out);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[i], expected[i], 1e-8 * expected[i]);  // %.9g
+}
+
+TEST(CliEval, ReadsAYamlMaterialFile) {
+  const auto path = std::filesystem::temp_directory_path() / "brdfnav_cli_eval_material.yaml";
+  std::ofstream(path) << "brdfnav_material: 1\nmodel: blinn_phong\nparams: {n: 50}\n"
+                         "rho_d: [0.1, 0.1, 0.1]\nrho_s: [1, 1, 1]\ncolorspace: lin_rec709\n";
+  const auto r = run_cli("eval --material " + path.string() + " --wi 0,0,1 --wo 0,0,1");
+  std::filesystem::remove(path);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // At wi = wo = n, cos_h = 1: f = 0.1/pi + (50 + 2)/(8 pi).
+  const double expected = 0.1 / kPi + 52.0 / (8 * kPi);
+  const Rgb got = parse_rgb(r.out);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[i], expected, 1e-8 * expected);
+}
+
+TEST(CliEval, BelowTheHorizonIsZero) {
+  const auto r = run_cli("eval --material blinn_phong:n=10 --wi 0,0,-1 --wo 0,0,1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "0 0 0\n");
+}
+
+TEST(CliEval, RejectsBadDirections) {
+  for (const char* wi : {"0,0,0", "nan,0,1", "1,2", "1,2,3,4", "a,b,c", "inf,0,1"}) {
+    SCOPED_TRACE(wi);
+    const auto r = run_cli(std::string("eval --material ward --wi ") + wi + " --wo 0,0,1");
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("--wi"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty());
+  }
+}
+
+TEST(CliEval, RejectsBadMaterials) {
+  struct Case {
+    const char* spec;
+    const char* message;
+  };
+  for (const Case& c :
+       {Case{"phong:n=10", "unknown model 'phong'"}, Case{"ward:alpha=0.1", "unknown key 'alpha'"},
+        Case{"ward:alpha_x=-1", "params.alpha_x"},
+        Case{"ward:alpha_x=abc", "'abc' is not a number"},
+        Case{"ward:rho_d=0.1/0.2", "expected one value or r/g/b"}, Case{"ward:rho_d=2", "rho_d"}}) {
+    SCOPED_TRACE(c.spec);
+    const auto r = run_cli(std::string("eval --material ") + c.spec + " --wi 0,0,1 --wo 0,0,1");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+  }
+}
+
+TEST(CliHelp, EveryCommandHasHelp) {
+  for (const char* cmd : {"", "eval ", "models ", "demo "}) {
+    SCOPED_TRACE(cmd);
+    const auto r = run_cli(std::string(cmd) + "--help");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << r.out;
+  }
+}
+
+TEST(CliModels, DocsAreGeneratedFromTheTables) {
+  const auto r = run_cli("models --markdown");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, read_text(std::filesystem::path(BRDFNAV_SOURCE_DIR) / "docs/MODELS.md"))
+      << "docs/MODELS.md is stale: regenerate it with `brdfnav models --markdown`";
+}
+
+TEST(CliDemo, WritesThePlotAndTables) {
+  const auto dir = std::filesystem::temp_directory_path() / "brdfnav_cli_demo";
+  std::filesystem::remove_all(dir);
+  const auto r = run_cli("demo --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"lobes.png", "lobes.csv", "albedo.csv"})
+    EXPECT_GT(std::filesystem::file_size(dir / f), 100u) << f;
+  EXPECT_NE(r.out.find("Directional albedo"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace brdfnav::test
