@@ -1,9 +1,313 @@
-// PLACEHOLDER until the He implementation lands (same session).
+// He, Torrance, Sillion, Greenberg 1991, unpolarised, exactly as the He section of
+// shared/reference/brdf-models.md writes it: directional-diffuse lobe F S G D / (pi cos_i cos_o)
+// plus a mirror term F exp(-g_s) S.
 #include <brdfnav/core/he.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
 namespace brdfnav {
-Rgb He::eval(const Vec3&, const Vec3&) const { return Rgb::Zero(); }
-std::optional<Vec3> He::sample(const Vec3&, const Vec2&) const { return std::nullopt; }
-double He::pdf(const Vec3&, const Vec3&) const { return 0; }
-double He::albedo_hint(const Vec3&) const { return 0; }
-Rgb He::mirror_weight(const Vec3&) const { return Rgb::Zero(); }
+
+namespace he_detail {
+
+namespace {
+// The series never goes beyond this many terms: for g <= kBlendHi and t <= 20 g (the lobe down to
+// exp(-20) of its peak) the terms beyond it add less than 5e-10 of the sum (mpmath).
+constexpr int kMaxTerms = 64;
+// Terms below this fraction of the largest one are left out (at most kMaxTerms of them).
+constexpr double kSeriesTolerance = 1e-10;
+// A sum below this fraction of its value at t = 0 (its peak over directions) is returned as 0.
+constexpr double kNegligible = 1e-14;
+// Their logarithms as literals (std::log is not constexpr; no static-initialisation order issue).
+constexpr double kLogInvTolerance = 23.025850929940457;  // -ln(kSeriesTolerance)
+constexpr double kLogInvNegligible = 32.23619130191664;  // -ln(kNegligible)
+constexpr double kLogMaxTerms = 4.1588830833596715;      // ln(kMaxTerms)
+
+// 1/m for m = 0..kMaxTerms + 1 (entry 0 unused): the loops multiply, never divide.
+constexpr std::array<double, kMaxTerms + 2> kInverse = [] {
+  std::array<double, kMaxTerms + 2> inv{};
+  for (std::size_t m = 1; m < inv.size(); ++m) inv[m] = 1.0 / static_cast<double>(m);
+  return inv;
+}();
+
+// ln(m) and ln(m!) for m = 0..kMaxTerms + 1 (ln 0 unused): log-space terms without log() calls.
+struct LogTables {
+  std::array<double, kMaxTerms + 2> log{}, log_factorial{};
+};
+// Built on first use, so that a He evaluated during another file's static initialisation is safe.
+const LogTables& log_tables() {
+  static const LogTables tables = [] {
+    LogTables t;
+    for (int m = 1; m <= kMaxTerms + 1; ++m) {
+      t.log[m] = std::log(static_cast<double>(m));
+      t.log_factorial[m] = t.log_factorial[m - 1] + t.log[m];
+    }
+    return t;
+  }();
+  return tables;
+}
+
+double smoothstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3.0 - 2.0 * x);
+}
+
+// Lower bound of ln(sum at t = 0), from its first term g exp(-g) and, for g >= 1, Jensen's
+// E[1/m | m >= 1] >= 1 / E[m | m >= 1], i.e. sum >= (1 - exp(-g))^2 / g >= (1 - 1/e)^2 / g.
+double log_sum_at_zero_lower_bound(double g, double log_g) {
+  constexpr double kLogOneMinusInvESquared = -0.9173502907741639;  // 2 ln(1 - 1/e)
+  const double first_term = log_g - g;
+  return g >= 1.0 ? std::max(first_term, kLogOneMinusInvESquared - log_g) : first_term;
+}
+
+// The terms a_m = w_m e_m, w_m = exp(-g) g^m / (m! m), e_m = exp(-t/m), are log-concave in m
+// (each factor is): their peak is found by bisection on the sign of ln a_{m+1} - ln a_m, all in
+// log space without exp(), and only the terms within kSeriesTolerance / kMaxTerms of the peak
+// are summed. Of their e_m only those with 2m past the last term need exp(), the others are
+// e_{2m}^2. The exps are the cost of eval(); this keeps them to about half the terms that matter.
+double channel_series_sum(double g, double t) {
+  if (!(g > 0)) return 0.0;
+  t = std::max(t, 0.0);
+  // exp(-t/m) < kNegligible for every m below `first`: those terms are negligible as a whole.
+  const double first = std::max(1.0, std::ceil(t / kLogInvNegligible));
+  if (!(first <= kMaxTerms)) return 0.0;
+  const int m_first = static_cast<int>(first);
+  const LogTables& ln = log_tables();
+  const double log_g = std::log(g);
+  auto log_weight = [&](int m) { return -g + m * log_g - ln.log_factorial[m] - ln.log[m]; };
+  auto log_term = [&](int m) { return log_weight(m) - t * kInverse[m]; };
+  // ln a_{m+1} - ln a_m = ln g + ln m - 2 ln(m + 1) + t / (m (m + 1)), decreasing in m.
+  auto rises = [&](int m) {
+    return log_g + ln.log[m] - 2.0 * ln.log[m + 1] + t * kInverse[m] * kInverse[m + 1] > 0;
+  };
+  int m_peak = m_first;
+  for (int hi = kMaxTerms; m_peak < hi;) {
+    const int mid = (m_peak + hi) / 2;
+    if (rises(mid)) {
+      m_peak = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  const double log_peak = log_term(m_peak);
+  // Terms below kNegligible times the sum at t = 0 (its peak over directions) do not matter
+  // either: when the peak term is one of them, neither does the whole sum.
+  const double log_negligible =
+      log_sum_at_zero_lower_bound(g, log_g) - kLogInvNegligible - kLogMaxTerms;
+  if (log_peak < log_negligible) return 0.0;
+  const double log_cut = std::max(log_peak - (kLogInvTolerance + kLogMaxTerms), log_negligible);
+  int m_begin = m_peak, m_last = m_peak;
+  while (m_begin > m_first && log_term(m_begin - 1) >= log_cut) --m_begin;
+  while (m_last < kMaxTerms && log_term(m_last + 1) >= log_cut) ++m_last;
+
+  std::array<double, kMaxTerms + 1> factor;  // only [m_begin, m_last] is used
+  for (int m = m_last; m >= m_begin; --m) {
+    factor[m] = 2 * m <= m_last ? factor[2 * m] * factor[2 * m] : std::exp(-t * kInverse[m]);
+  }
+  // w_{m+1} = w_m g m / (m + 1)^2.
+  double weight = std::exp(log_weight(m_begin)), sum = 0.0;
+  for (int m = m_begin; m <= m_last; ++m) {
+    sum += weight * factor[m];
+    weight *= g * (m * kInverse[m + 1]) * kInverse[m + 1];
+  }
+  return sum;
+}
+}  // namespace
+
+Rgb series_sum(const Rgb& g, const Rgb& t) {
+  return Rgb(channel_series_sum(g[0], t[0]), channel_series_sum(g[1], t[1]),
+             channel_series_sum(g[2], t[2]));
+}
+
+Rgb rough_limit_sum(const Rgb& g, const Rgb& t) {
+  return (-t / g).exp() / g;
+}
+
+Rgb distribution_sum(const Rgb& g, const Rgb& t) {
+  Rgb out;
+  for (int c = 0; c < 3; ++c) {
+    const double w = smoothstep((g[c] - kBlendLo) / (kBlendHi - kBlendLo));
+    const double series = w < 1 ? channel_series_sum(g[c], t[c]) : 0.0;
+    const double limit = w > 0 ? std::exp(-t[c] / g[c]) / g[c] : 0.0;
+    out[c] = (1.0 - w) * series + w * limit;
+  }
+  return out;
+}
+
+}  // namespace he_detail
+
+namespace {
+
+constexpr double kSqrtPi = 1.7724538509055160273;
+// Cosines are floored here: S1 ~ cos near grazing cancels the 1/cos of the lobe, and the floor
+// keeps that cancellation free of 0/0 and overflow for directions on (or rounding onto) the
+// horizon.
+constexpr double kMinCos = 1e-10;
+// For a beyond this erfc(a) < 1e-295 and exp(-a^2) underflows: S1 = 1 and K = 0 exactly in
+// double precision (this also covers normal incidence, where cot(theta) is infinite).
+constexpr double kUnshadowedA = 26.0;
+
+// Per-channel 1 / lambda^2 (micrometres^-2).
+Rgb inv_lambda_squared() {
+  const Rgb lambda(He::kLambda[0], He::kLambda[1], He::kLambda[2]);
+  return (lambda * lambda).inverse();
+}
+
+// Sampling: a Beckmann half-vector lobe (see sampling_slopes) mixed with a kWideFactor times wider
+// one, which covers the lobe's heavier tails (its Poisson components with m above g) and the
+// shapes that are not Beckmann-like (grazing views, where vz varies across the lobe).
+constexpr double kWideFraction = 0.2;
+constexpr double kWideFactor = 2.5;
+constexpr double kMinSlope = 1e-5;
+constexpr double kMaxSlope = 1.0;
+constexpr double kMaxWideSlope = 2.5;
+
+// Shadowing S1(theta) and K(theta) = tan(theta) erfc(a) of one direction, a = tau cot / (2 sigma).
+struct AngleTerms {
+  double shadowing;  // S1
+  double k;          // K
+};
+
+AngleTerms angle_terms(double cos_theta, double sin_theta, double sigma, double tau) {
+  const double denom = 2.0 * sigma * sin_theta;
+  if (tau * cos_theta >= kUnshadowedA * denom) return {1.0, 0.0};
+  const double a = tau * cos_theta / denom;
+  const double erfc_a = std::erfc(a);
+  const double l = 0.5 * (std::exp(-a * a) / (kSqrtPi * a) - erfc_a);
+  return {(1.0 - 0.5 * erfc_a) / (1.0 + l), sin_theta / cos_theta * erfc_a};
+}
+
+// Root x >= 0 of x exp(x^2 / 2) = y. The left side is increasing and convex, so Newton started
+// to the right of the root converges monotonically: x <= y always, and x <= sqrt(2 ln y) once
+// the root is >= 1 (which holds when y >= exp(1/2)).
+double solve_x_exp_half_x2(double y) {
+  if (!(y > 0)) return 0.0;
+  double x = y <= std::exp(0.5) ? y : std::sqrt(2.0 * std::log(y));
+  for (int i = 0; i < 40; ++i) {
+    const double step = (x - y * std::exp(-0.5 * x * x)) / (1.0 + x * x);
+    x -= step;
+    if (std::abs(step) <= 1e-13 * x) break;
+  }
+  return x;
+}
+
+// sigma0 = sigma / sqrt(1 + x^2) with x = z0 / sigma from K_i + K_o.
+double effective_sigma(double sigma, double k_sum) {
+  const double x = solve_x_exp_half_x2(k_sum / std::sqrt(8.0 * kPi));
+  return sigma / std::sqrt(1.0 + x * x);
+}
+
+double floored_cos(const Vec3& w) {
+  return std::max(w.z(), kMinCos);
+}
+double sin_theta(const Vec3& w) {
+  return std::sqrt(w.x() * w.x() + w.y() * w.y());
+}
+
+// Quantities of the mirror configuration wi = (-wo.x, -wo.y, wo.z), where theta_i = theta_o.
+struct MirrorTerms {
+  double cos;
+  double fresnel;
+  double s1;  // S1(theta_o); the mirror's S is its square
+  double sigma0;
+};
+
+MirrorTerms mirror_terms(const He& he, const Vec3& wo) {
+  const double cos_o = floored_cos(wo);
+  const AngleTerms t = angle_terms(cos_o, sin_theta(wo), he.sigma, he.tau);
+  return {cos_o, fresnel_dielectric(cos_o, he.eta), t.shadowing,
+          effective_sigma(he.sigma, 2.0 * t.k)};
+}
+
+// g at the mirror direction per channel: (4 pi sigma0 cos / lambda)^2.
+Rgb mirror_g(const MirrorTerms& m) {
+  const double s = 4.0 * kPi * m.sigma0 * m.cos;
+  return inv_lambda_squared() * (s * s);
+}
+
+// Beckmann slopes of the two sampling lobes at wo. The lobe is a Poisson mixture of Gaussians in
+// the half-vector slope, the m-th of width sqrt(m) lambda / (pi tau vz): near the mirror
+// (vz = 2 cos_o) the first has width lambda / (2 pi tau cos_o) (the smooth-surface lobe) and the
+// mixture tends to width 2 sigma0 / tau (the rough limit) for large g. Their quadrature sum
+// covers both regimes; the longest wavelength gives the widest, safest lobe.
+std::array<double, 2> sampling_slopes(const He& he, const Vec3& wo) {
+  const MirrorTerms mirror = mirror_terms(he, wo);
+  const double rough = 2.0 * mirror.sigma0 / he.tau;
+  const double smooth = He::kLambda[0] / (2.0 * kPi * he.tau * mirror.cos);
+  const double m = std::clamp(std::hypot(rough, smooth), kMinSlope, kMaxSlope);
+  return {m, std::min(kWideFactor * m, kMaxWideSlope)};
+}
+
+}  // namespace
+
+Rgb He::eval(const Vec3& wi, const Vec3& wo) const {
+  if (wi.z() <= 0 || wo.z() <= 0) return Rgb::Zero();
+  // Every quantity below is computed symmetrically in (wi, wo): reciprocity holds to the bit.
+  const double cos_i = floored_cos(wi), cos_o = floored_cos(wo);
+  const double vx = wi.x() + wo.x(), vy = wi.y() + wo.y();
+  const double vxy2 = vx * vx + vy * vy;
+  const double vz = cos_i + cos_o;
+  const double v2 = vxy2 + vz * vz;
+  // For unit wi, wo: wi.h = (1 + wi.wo) / |wi + wo| = |wi + wo| / 2 (no degenerate h needed).
+  const double fresnel = fresnel_dielectric(std::min(0.5 * std::sqrt(v2), 1.0), eta);
+  const AngleTerms ti = angle_terms(cos_i, sin_theta(wi), sigma, tau);
+  const AngleTerms to = angle_terms(cos_o, sin_theta(wo), sigma, tau);
+  const double sigma0 = effective_sigma(sigma, ti.k + to.k);
+  const double geometry = (v2 / vz) * (v2 / vz);
+  // Products of an i and an o factor are formed first: commutative, hence bitwise symmetric.
+  const double shadowing = ti.shadowing * to.shadowing;
+  const double cos_product = cos_i * cos_o;
+  const double common = fresnel * shadowing * geometry / (kPi * cos_product);
+
+  // Per channel: g = (2 pi sigma0 vz / lambda)^2, t = pi^2 tau^2 vxy^2 / lambda^2 and D's prefactor
+  // pi^2 tau^2 / (4 lambda^2).
+  const Rgb inv_lambda2 = inv_lambda_squared();
+  const double g_scale = (2.0 * kPi * sigma0 * vz) * (2.0 * kPi * sigma0 * vz);
+  const double tau_scale = kPi * kPi * tau * tau;
+  const Rgb sum =
+      he_detail::distribution_sum(g_scale * inv_lambda2, tau_scale * vxy2 * inv_lambda2);
+  return common * (0.25 * tau_scale) * inv_lambda2 * sum;
+}
+
+Rgb He::mirror_weight(const Vec3& wo) const {
+  if (wo.z() <= 0) return Rgb::Zero();
+  const MirrorTerms m = mirror_terms(*this, wo);
+  return m.fresnel * m.s1 * m.s1 * (-mirror_g(m)).exp();
+}
+
+// The lobe carries roughly the part of F that the mirror term does not, (1 - exp(-g_s)) F, shadowed
+// by S1(theta_o) on the way out; S1(theta_i) is left out, since most of the lobe is reflected
+// away from grazing even when wo is grazing. The green channel stands for all three (a hint).
+double He::albedo_hint(const Vec3& wo) const {
+  if (wo.z() <= 0) return 0.0;
+  const MirrorTerms m = mirror_terms(*this, wo);
+  return m.fresnel * m.s1 * -std::expm1(-mirror_g(m)[1]);
+}
+
+std::optional<Vec3> He::sample(const Vec3& wo, const Vec2& u) const {
+  if (wo.z() <= 0) return std::nullopt;
+  const auto slopes = sampling_slopes(*this, wo);
+  // u[0] picks the lobe and is rescaled to [0, 1) for the lobe's own use.
+  const double main_fraction = 1.0 - kWideFraction;
+  const bool wide = u[0] >= main_fraction;
+  const Vec2 v(wide ? (u[0] - main_fraction) / kWideFraction : u[0] / main_fraction, u[1]);
+  return reflect_about_half(wo, sample_beckmann(v, slopes[wide ? 1 : 0]));
+}
+
+double He::pdf(const Vec3& wi, const Vec3& wo) const {
+  if (wi.z() <= 0 || wo.z() <= 0) return 0.0;
+  const auto h = half_vector(wi, wo);
+  // Sampled half vectors have cos_h > 0.06 (tan^2 <= 37 m^2, m <= 2.5); the guard also keeps
+  // beckmann_d away from cos_h^2 underflowing to 0 (0/0).
+  if (!h || h->z() < kMinCos) return 0.0;
+  const auto slopes = sampling_slopes(*this, wo);
+  const double pdf_h = ((1.0 - kWideFraction) * beckmann_d(h->z(), slopes[0]) +
+                        kWideFraction * beckmann_d(h->z(), slopes[1])) *
+                       h->z();
+  // dw_h / dw_i = 1 / (4 wo.h), with wo.h floored like the cosines: finite for grazing wo.
+  const double wo_h = wo.dot(*h);
+  return wo_h > 0 ? pdf_h / (4.0 * std::max(wo_h, kMinCos)) : 0.0;
+}
+
 }  // namespace brdfnav

@@ -28,11 +28,32 @@ struct He {
 
   // Directional-diffuse term only (the mirror term is a delta: see mirror_weight()).
   Rgb eval(const Vec3& wi, const Vec3& wo) const;
+  // Reflects wo about a Beckmann half vector (a mixture of two slopes chosen from sigma0 at wo,
+  // tau and lambda); pdf() is the exact density of the directions it returns.
   std::optional<Vec3> sample(const Vec3& wo, const Vec2& u) const;
   double pdf(const Vec3& wi, const Vec3& wo) const;
+  // Rough estimate of the lobe's albedo at wo, (1 - exp(-g_s)) F S1(theta_o) with the green g_s,
+  // for choosing between sampling strategies.
   double albedo_hint(const Vec3& wo) const;
   // Reflectance of the mirror term at wo, per channel: F(cos_o) exp(-g_s) S.
   Rgb mirror_weight(const Vec3& wo) const;
 };
+
+// The sum over m in He's distribution D (without the pi^2 tau^2 / (4 lambda^2) prefactor), per
+// channel, with t = pi^2 tau^2 vxy^2 / lambda^2. Exposed so that tests can compare the series
+// with its rough-surface limit inside the blend range.
+namespace he_detail {
+// Blend range of g: the series below kBlendLo, the rough limit above kBlendHi.
+inline constexpr double kBlendLo = 14.0;
+inline constexpr double kBlendHi = 22.0;
+// sum_{m>=1} exp(-g) g^m / (m! m) exp(-t / m) over m <= 64, to a relative 1e-10; a sum below
+// 1e-14 of its value at t = 0 (the peak over directions) may come back as 0. Channels with
+// g <= 0 give 0.
+Rgb series_sum(const Rgb& g, const Rgb& t);
+// The large-g limit exp(-t / g) / g.
+Rgb rough_limit_sum(const Rgb& g, const Rgb& t);
+// series_sum below kBlendLo, rough_limit_sum above kBlendHi, a smoothstep blend in between.
+Rgb distribution_sum(const Rgb& g, const Rgb& t);
+}  // namespace he_detail
 
 }  // namespace brdfnav

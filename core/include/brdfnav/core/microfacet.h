@@ -33,7 +33,9 @@ inline double half_to_incident_pdf(double pdf_h, const Vec3& wo, const Vec3& h) 
 
 // Beckmann distribution normalised so that integral D cos_h dw_h = 1 (slope RMS m).
 inline double beckmann_d(double cos_h, double m) {
-  if (cos_h <= 0) return 0.0;
+  // Below 1e-8 the exponential is exactly 0 in double for every valid m (<= 1.5), while
+  // cos_h^4 could underflow to 0 and turn the quotient into 0/0.
+  if (cos_h <= 1e-8) return 0.0;
   const double c2 = cos_h * cos_h;
   const double tan2 = (1.0 - c2) / c2;
   return std::exp(-tan2 / (m * m)) / (kPi * m * m * c2 * c2);

@@ -1,0 +1,479 @@
+// He et al. 1991 lobe (core/src/he.cpp) against the He section of
+// shared/reference/brdf-models.md.
+#include <brdfnav/core/he.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace brdfnav {
+namespace {
+
+constexpr double kDeg = kPi / 180.0;
+
+He make_he(double sigma, double tau, double eta) {
+  const std::array<double, 3> p{sigma, tau, eta};
+  return He(p);
+}
+
+Vec3 direction(double theta_deg, double phi_deg) {
+  return spherical_direction(std::sin(theta_deg * kDeg), std::cos(theta_deg * kDeg),
+                             phi_deg * kDeg);
+}
+
+double relative_error(double value, double expected) {
+  return std::abs(value - expected) / std::abs(expected);
+}
+
+// --- Independent, deliberately plain versions of the sheet's formulas (no code shared with
+// he.cpp), used by the rough-limit test.
+
+double plain_fresnel(double c, double eta) {
+  const double g = std::sqrt(eta * eta + c * c - 1.0);
+  const double a = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+  return 0.5 * (g - c) * (g - c) / ((g + c) * (g + c)) * (1.0 + a * a);
+}
+
+double plain_s1(const Vec3& w, double sigma, double tau) {
+  const double theta = std::acos(w.z());
+  if (theta == 0.0) return 1.0;
+  const double a = tau / std::tan(theta) / (2.0 * sigma);
+  const double l = 0.5 * (std::exp(-a * a) / (std::sqrt(kPi) * a) - std::erfc(a));
+  return (1.0 - 0.5 * std::erfc(a)) / (1.0 + l);
+}
+
+double plain_k(const Vec3& w, double sigma, double tau) {
+  const double tan_theta = std::tan(std::acos(w.z()));
+  if (tan_theta == 0.0) return 0.0;
+  return tan_theta * std::erfc(tau / (2.0 * sigma * tan_theta));
+}
+
+// sigma0 with x exp(x^2/2) = (K_i + K_o) / sqrt(8 pi) solved by bisection.
+double plain_sigma0(const Vec3& wi, const Vec3& wo, double sigma, double tau) {
+  const double y = (plain_k(wi, sigma, tau) + plain_k(wo, sigma, tau)) / std::sqrt(8.0 * kPi);
+  double lo = 0.0, hi = 10.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (mid * std::exp(0.5 * mid * mid) < y ? lo : hi) = mid;
+  }
+  return sigma / std::sqrt(1.0 + lo * lo);
+}
+
+// The rough-surface limit written as a microfacet lobe: F S D_Beckmann / (4 cos_i cos_o) with
+// the Beckmann slope m = 2 sigma0 / tau.
+double beckmann_form(const He& he, const Vec3& wi, const Vec3& wo) {
+  const Vec3 h = (wi + wo).normalized();
+  const double m = 2.0 * plain_sigma0(wi, wo, he.sigma, he.tau) / he.tau;
+  const double tan2 = (1.0 - h.z() * h.z()) / (h.z() * h.z());
+  const double d = std::exp(-tan2 / (m * m)) / (kPi * m * m * std::pow(h.z(), 4));
+  const double s = plain_s1(wi, he.sigma, he.tau) * plain_s1(wo, he.sigma, he.tau);
+  return plain_fresnel(wi.dot(h), he.eta) * s * d / (4.0 * wi.z() * wo.z());
+}
+
+// --- Spot values.
+
+struct Spot {
+  double sigma, tau, eta;
+  Vec3 wi, wo;
+  std::array<double, 3> lobe;    // eval(wi, wo), R G B
+  std::array<double, 3> mirror;  // mirror_weight(wo), R G B
+};
+
+// Reference values computed with mpmath at 40 digits straight from the sheet: F at c = wi.h,
+// S1 with the errata exp(-a^2), sigma0 from findroot, D from 400 terms of the series in log
+// space (A, B: every g < 14) or from the rough limit (C: every g > 100). Intermediates, so that
+// a failure can be traced:
+//  A: c 0.486233090722, F 0.093819244365, S1i 0.994353635075, S1o 0.999999617232,
+//     x 0.00551505705415, sigma0 0.049999239621, G 1.06681645432,
+//     g (0.19887282, 0.29903593, 0.41969029), t (0.63682036, 0.95755754, 1.3439107).
+//  B: c 0.92732657785, F 0.111602993217, S = 1, sigma0 = sigma, G 3.44499329645,
+//     g (4.6931586, 7.0568871, 9.9041844), t (7.9664976, 11.978857, 16.81206).
+//  C: c 0.641569678485, F 0.624367253277, S1i 0.936439465146, S1o 0.997417258326,
+//     x 0.0363120610542, sigma0 0.999341368376, G 1.86038969321,
+//     g (138.08911, 207.63825, 291.41567). The rough limit does not depend on lambda.
+const std::array<Spot, 3> kSpots{{
+    {0.05,
+     0.5,
+     1.5,
+     direction(70, 0),
+     direction(55, 160),
+     {0.022129139956102045, 0.034647163957506642, 0.044776529493624933},
+     {0.051028020591369223, 0.043603512699423584, 0.036079799007367833}},
+    {0.12,
+     8.0,
+     2.0,
+     direction(20, 30),
+     direction(24, 205),
+     {1.7817989811388747, 1.8680811974699034, 1.9275977036482427},
+     {0.0011679499566459986, 0.00011739044402168936, 7.3741889248820282e-6}},
+    {1.0,
+     4.0,
+     9.0,
+     direction(60, 0),
+     direction(45, 150),
+     {0.39888350178087791, 0.39888350178087791, 0.39888350178087791},
+     {2.363033118551729e-83, 7.2500449698505058e-125, 7.1532767830595425e-175}},
+}};
+
+TEST(He, SpotValuesMatchTheSheetPerChannel) {
+  for (const Spot& s : kSpots) {
+    SCOPED_TRACE(::testing::Message() << "sigma " << s.sigma << " tau " << s.tau);
+    const He he = make_he(s.sigma, s.tau, s.eta);
+    const Rgb lobe = he.eval(s.wi, s.wo);
+    const Rgb mirror = he.mirror_weight(s.wo);
+    for (int c = 0; c < 3; ++c) {
+      // The series stops at a relative 1e-10 and the erfc/exp of libm are good to ~1e-15.
+      EXPECT_LT(relative_error(lobe[c], s.lobe[c]), 1e-8) << "channel " << c;
+      // exp(-g_s) with g_s up to ~400 turns a 1e-16 error of g_s into ~1e-13 of the weight.
+      EXPECT_LT(relative_error(mirror[c], s.mirror[c]), 1e-10) << "channel " << c;
+    }
+  }
+}
+
+// --- Series and rough limit.
+
+// sum_{m>=1} exp(-g) g^m / (m! m) exp(-t/m) term by term in long double, 400 terms.
+double plain_series(double g, double t) {
+  long double sum = 0;
+  for (int m = 1; m <= 400; ++m) {
+    sum += std::exp(-g + m * std::log(static_cast<long double>(g)) - std::lgamma(m + 1.0L) -
+                    std::log(static_cast<long double>(m)) - t / static_cast<long double>(m));
+  }
+  return static_cast<double>(sum);
+}
+
+// The series keeps only the terms near its peak, finds that peak by bisection and builds half of
+// the exp(-t/m) by squaring: it must still equal the plain sum.
+TEST(He, SeriesMatchesThePlainSumOfAllTerms) {
+  for (double g : {1e-6, 1e-3, 0.1, 0.7, 2.0, 5.0, 10.0, 14.0, 18.0, 22.0}) {
+    const double at_zero = plain_series(g, 0.0);
+    // t from 0 (the peak) to far beyond the lobe; scaled with g once the lobe widens with g.
+    for (double ratio : {0.0, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 1e4}) {
+      const double t = ratio * std::max(g, 1.0);
+      const double expected = plain_series(g, t);
+      const double value = he_detail::series_sum(Rgb::Constant(g), Rgb::Constant(t))[0];
+      // Terms below 1e-10 / 64 of the largest are left out, and sums below 1e-14 of the value
+      // at t = 0 (the peak over directions) may be returned as 0.
+      EXPECT_LE(std::abs(value - expected), 2e-10 * expected + 1e-14 * at_zero)
+          << "g " << g << " t " << t << " value " << value << " expected " << expected;
+    }
+  }
+}
+
+TEST(He, SeriesAndRoughLimitAgreeInTheBlendRange) {
+  for (double g = he_detail::kBlendLo; g <= he_detail::kBlendHi; g += 0.5) {
+    for (double t_over_g : {0.0, 0.5, 1.0, 2.0}) {
+      const Rgb gg = Rgb::Constant(g), t = Rgb::Constant(t_over_g * g);
+      const double series = he_detail::series_sum(gg, t)[0];
+      const double limit = he_detail::rough_limit_sum(gg, t)[0];
+      // For t <= 2 g (tan^2 theta_h <= 2 m^2: the bulk of the lobe) the limit drops O(1/g) terms:
+      // E[1/m] = 1/g + 1/g^2 + ... and the spread of exp(-t/m) over the Poisson weights: below 8%
+      // at g = 14, less above (computed in Python).
+      EXPECT_LT(relative_error(limit, series), 0.1) << "g " << g << " t/g " << t_over_g;
+    }
+  }
+}
+
+TEST(He, DistributionSumIsContinuousAcrossTheSwitch) {
+  for (double t_over_g : {0.0, 1.0, 3.0}) {
+    const double step = 1e-3;
+    double previous = he_detail::distribution_sum(Rgb::Constant(he_detail::kBlendLo - 1),
+                                                  Rgb::Constant(t_over_g * 13))[0];
+    for (double g = he_detail::kBlendLo - 1 + step; g < he_detail::kBlendHi + 1; g += step) {
+      const double value =
+          he_detail::distribution_sum(Rgb::Constant(g), Rgb::Constant(t_over_g * g))[0];
+      // Along t = r g both the series and the limit vary like exp(-r) / g, 1e-3 / g relative per
+      // step, and the blend adds at most smoothstep' (1.5 / 8 per unit g) times their gap
+      // (< 10%, previous test), 2e-5 per step: 1e-3 leaves a wide margin, while a switch
+      // without the blend would jump by the whole 5-10% gap.
+      EXPECT_LT(relative_error(value, previous), 1e-3) << "g " << g << " t/g " << t_over_g;
+      previous = value;
+    }
+  }
+}
+
+// As g grows (sigma >> lambda) the lobe becomes the Beckmann microfacet lobe with m = 2 sigma0 /
+// tau; here m = 0.2 throughout (tau = 10 sigma) while g at the mirror grows from ~0.3 to several
+// hundred.
+TEST(He, RoughLimitIsABeckmannLobe) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<double> worst;
+  for (double sigma : {0.06, 0.12, 0.18, 0.36, 1.0}) {
+    const He he = make_he(sigma, 10 * sigma, 1.5);
+    double deviation = 0;
+    for (int n = 0; n < 400; ++n) {
+      const Vec3 wo = direction(60 * uniform(rng), 360 * uniform(rng));
+      // wi within about 1.4 Beckmann widths of the mirror half vector (the bulk of the lobe).
+      const double tan_h = 0.2 * std::sqrt(2.0 * uniform(rng));
+      const Vec3 h = spherical_direction(tan_h / std::hypot(1.0, tan_h),
+                                         1.0 / std::hypot(1.0, tan_h), 2 * kPi * uniform(rng));
+      const Vec3 wi = reflect(wo, h);
+      if (wi.z() < 0.1) continue;
+      const double expected = beckmann_form(he, wi, wo);
+      const Rgb value = he.eval(wi, wo);
+      for (int c = 0; c < 3; ++c) {
+        deviation = std::max(deviation, relative_error(value[c], expected));
+      }
+    }
+    worst.push_back(deviation);
+  }
+  // The deviation shrinks as g grows. At the mirror g_red = (4 pi sigma cos_o / 0.645)^2: sigma
+  // 0.06..0.18 covers g ~ 0.3..12 where the series is far from its limit; sigma 0.36 has
+  // g_red >= 12, so only the O(1/g) terms of the series remain (E[1/m] = 1/g + 1/g^2 + ... and
+  // the spread of exp(-t/m), ~8% each at g = 12, up to t = 2 g here); with sigma = 1 every
+  // channel uses the limit (g > 90), algebraically the same expression: equal to rounding.
+  for (std::size_t k = 1; k < worst.size(); ++k) EXPECT_LT(worst[k], worst[k - 1]) << k;
+  EXPECT_LT(worst[3], 0.2);
+  EXPECT_LT(worst.back(), 1e-9);
+}
+
+TEST(He, LobeIsContinuousWhenSigmaSweepsThroughTheBlend) {
+  // g at the mirror for wo at 30 degrees: (4 pi sigma cos / lambda)^2; sigma 0.08..0.3 takes it
+  // from 1.8 to 26 (red) and from 3.8 to 54 (blue): every channel crosses the blend range.
+  const Vec3 wo = direction(30, 0);
+  const Vec3 wi = reflect(wo, direction(3, 90));
+  const double ratio = 1.0005;
+  Rgb previous = make_he(0.08, 4, 1.5).eval(wi, wo);
+  for (double sigma = 0.08 * ratio; sigma < 0.3; sigma *= ratio) {
+    const Rgb value = make_he(sigma, 4, 1.5).eval(wi, wo);
+    for (int c = 0; c < 3; ++c) {
+      // d ln f / d ln sigma is O(1) here, so a 0.05% step moves f by ~0.1%; a hard switch
+      // between series and limit would jump by several percent.
+      EXPECT_LT(relative_error(value[c], previous[c]), 5e-3) << "sigma " << sigma << " c " << c;
+    }
+    previous = value;
+  }
+}
+
+// --- Robustness.
+
+// Directions that stress the edge cases: normal incidence (cot = inf), grazing and on the
+// horizon, tiny and denormal z, wi = -wo in the plane (h degenerate).
+std::vector<Vec3> edge_directions() {
+  const double tiny = 1e-300, denormal = 4.9e-324;
+  return {Vec3(0, 0, 1),
+          Vec3(1, 0, 0),
+          Vec3(-1, 0, 0),
+          Vec3(0, 1, 0),
+          Vec3(1, 0, tiny),
+          Vec3(-1, 0, tiny),
+          Vec3(1, 0, denormal),
+          Vec3(std::sqrt(1 - 1e-24), 0, 1e-12),
+          Vec3(-std::sqrt(1 - 1e-24), 0, 1e-12),
+          direction(89.999, 45),
+          direction(1e-9, 10),
+          Vec3(0, 0, -1)};
+}
+
+TEST(He, FiniteNonNegativeAndReciprocalEverywhere) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, uniform(rng)); };
+  const std::vector<Vec3> edges = edge_directions();
+  for (int p = 0; p < 300; ++p) {
+    const He he = make_he(log_uniform(1e-3, 10), log_uniform(0.1, 500), log_uniform(1.01, 20));
+    SCOPED_TRACE(::testing::Message()
+                 << "sigma " << he.sigma << " tau " << he.tau << " eta " << he.eta);
+    std::vector<Vec3> dirs = edges;
+    for (int k = 0; k < 20; ++k)
+      dirs.push_back(sample_cosine_hemisphere({uniform(rng), uniform(rng)}));
+    for (const Vec3& wo : dirs) {
+      const Rgb mirror = he.mirror_weight(wo);
+      EXPECT_TRUE(mirror.isFinite().all() && (mirror >= 0).all() && (mirror <= 1).all());
+      const double hint = he.albedo_hint(wo);
+      EXPECT_TRUE(std::isfinite(hint) && hint >= 0);
+      const auto sampled = he.sample(wo, {uniform(rng), uniform(rng)});
+      if (sampled) {
+        EXPECT_GT(sampled->z(), 0);
+        EXPECT_NEAR(sampled->norm(), 1.0, 1e-9);
+      }
+      for (const Vec3& wi : dirs) {
+        const Rgb f = he.eval(wi, wo);
+        ASSERT_TRUE(f.isFinite().all() && (f >= 0).all())
+            << wi.transpose() << " | " << wo.transpose();
+        const double pdf = he.pdf(wi, wo);
+        ASSERT_TRUE(std::isfinite(pdf) && pdf >= 0);
+        if (wi.z() <= 0 || wo.z() <= 0) {
+          EXPECT_TRUE((f == 0).all() && pdf == 0);
+        }
+        // Every quantity is formed symmetrically in (wi, wo), so this holds to the bit.
+        const Rgb g = he.eval(wo, wi);
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(f[c], g[c]);
+      }
+    }
+  }
+}
+
+// --- Integrals over the hemisphere.
+
+// Integral of fn(wi) over the upper hemisphere, by the midpoint rule in half-vector
+// coordinates around the normal: h has slope p = width tan(v), v in [0, pi/2), azimuth phi, and
+// wi = reflect(wo, h) with dwi = 4 (wo.h) dw_h. Lobes of any narrowness around the mirror
+// direction are resolved when `width` is about their slope width.
+template <typename T, typename Fn>
+T hemisphere_integral(const Vec3& wo, double width, T zero, Fn&& fn, int nv = 192, int nphi = 96) {
+  T total = zero;
+  for (int i = 0; i < nv; ++i) {
+    const double v = (i + 0.5) / nv * (kPi / 2);
+    const double p = width * std::tan(v);
+    // dw_h = p / (1 + p^2)^(3/2) dp dphi, dp = width / cos^2(v) dv.
+    const double jacobian = p / std::pow(1 + p * p, 1.5) * width / (std::cos(v) * std::cos(v));
+    for (int j = 0; j < nphi; ++j) {
+      const double phi = (j + 0.5) / nphi * 2 * kPi;
+      const Vec3 h = Vec3(p * std::cos(phi), p * std::sin(phi), 1.0).normalized();
+      const double wo_h = wo.dot(h);
+      if (wo_h <= 0) continue;
+      const Vec3 wi = reflect(wo, h);
+      if (wi.z() <= 0) continue;
+      total += fn(wi) * (4 * wo_h * jacobian);
+    }
+  }
+  return total * ((kPi / 2 / nv) * (2 * kPi / nphi));
+}
+
+// Slope width of the lobe near the mirror: the rough width 2 sigma / tau or the smooth-surface
+// width lambda_red / (2 pi tau cos_o), whichever is larger.
+double lobe_width(const He& he, const Vec3& wo) {
+  return std::min(std::hypot(2 * he.sigma / he.tau, 0.645 / (2 * kPi * he.tau * wo.z())), 1.0);
+}
+
+TEST(He, DirectionalAlbedoWithMirrorIsAtMostOne) {
+  for (double sigma : {1e-3, 0.02, 0.16, 1.28, 10.0}) {
+    for (double tau : {0.1, 2.0, 32.0, 500.0}) {
+      for (double eta : {1.5, 20.0}) {
+        const He he = make_he(sigma, tau, eta);
+        for (double theta_o : {0.0, 60.0, 85.0}) {
+          const Vec3 wo = direction(theta_o, 0);
+          const Rgb albedo = he.mirror_weight(wo) +
+                             hemisphere_integral(
+                                 wo, lobe_width(he, wo), Rgb::Zero().eval(),
+                                 [&](const Vec3& wi) { return (he.eval(wi, wo) * wi.z()).eval(); });
+          // The He lobe stays close to F(cos_o) (<= 0.82 here), so 1e-3 of quadrature error at the
+          // horizon cut is plenty of margin.
+          EXPECT_LE(albedo.maxCoeff(), 1.0 + 1e-3)
+              << "sigma " << sigma << " tau " << tau << " eta " << eta << " theta_o " << theta_o;
+        }
+      }
+    }
+  }
+}
+
+// --- Mirror term.
+
+TEST(He, MirrorWeightTendsToFresnelWhenSmoothAndToZeroWhenRough) {
+  for (double theta : {0.0, 30.0, 60.0, 80.0}) {
+    const Vec3 wo = direction(theta, 40);
+    const double fresnel = plain_fresnel(wo.z(), 1.5);
+    // sigma = 1e-3: g_s = (4 pi sigma cos / lambda)^2 <= 8e-4 and S = 1 (a = tau cot / 2 sigma
+    // is huge), so the weight is F exp(-g_s) = F within 1e-3.
+    const Rgb smooth = make_he(1e-3, 10, 1.5).mirror_weight(wo);
+    for (int c = 0; c < 3; ++c) EXPECT_LT(relative_error(smooth[c], fresnel), 1e-3);
+    // Blue loses most (largest g_s).
+    EXPECT_GT(smooth[0], smooth[2]);
+    double previous = fresnel;
+    for (double sigma : {0.01, 0.05, 0.2, 1.0}) {
+      const double weight = make_he(sigma, 10, 1.5).mirror_weight(wo)[1];
+      EXPECT_LT(weight, previous) << "sigma " << sigma;
+      previous = weight;
+    }
+    // sigma = 2: g_s = (4 pi sigma0 cos / lambda)^2 >= 27 (red at 80 degrees, where shadowing
+    // lowers sigma0 to 0.77 sigma).
+    EXPECT_LT(make_he(2.0, 10, 1.5).mirror_weight(wo).maxCoeff(), 1e-11);
+  }
+}
+
+// --- Sampling.
+
+struct SamplingCase {
+  double sigma, tau, eta, theta_o;
+};
+// Moderately wide lobes (so that a theta/phi histogram resolves them), covering the smooth
+// regime (small g: width ~ lambda / (2 pi tau cos_o)), the rough regime, a clamped very rough
+// lobe and grazing view.
+const std::array<SamplingCase, 5> kSamplingCases{{
+    {0.05, 2.0, 1.5, 60.0},
+    {0.4, 4.0, 1.5, 30.0},
+    {0.3, 2.0, 4.0, 80.0},
+    {2.0, 2.0, 1.5, 45.0},
+    {0.1, 1.0, 1.5, 0.0},
+}};
+
+TEST(He, PdfIntegratesToTheFractionOfValidSamples) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (const SamplingCase& s : kSamplingCases) {
+    const He he = make_he(s.sigma, s.tau, s.eta);
+    const Vec3 wo = direction(s.theta_o, 20);
+    const double integral = hemisphere_integral(
+        wo, lobe_width(he, wo), 0.0, [&](const Vec3& wi) { return he.pdf(wi, wo); }, 384, 192);
+    const int n = 40000;
+    int valid = 0;
+    for (int k = 0; k < n; ++k) valid += he.sample(wo, {uniform(rng), uniform(rng)}).has_value();
+    const double fraction = static_cast<double>(valid) / n;
+    EXPECT_LE(integral, 1.0 + 1e-3);
+    // 4 binomial standard deviations plus 2e-3 of quadrature error.
+    const double tolerance = 4 * std::sqrt(fraction * (1 - fraction) / n) + 2e-3;
+    EXPECT_NEAR(integral, fraction, tolerance) << "sigma " << s.sigma << " theta_o " << s.theta_o;
+  }
+}
+
+// Chi-square of sample() against pdf() on a theta/phi histogram of wi.
+TEST(He, SamplesFollowThePdf) {
+  constexpr int kTheta = 16, kPhi = 32, kSub = 12, kSamples = 200000;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (const SamplingCase& s : kSamplingCases) {
+    SCOPED_TRACE(::testing::Message() << "sigma " << s.sigma << " theta_o " << s.theta_o);
+    const He he = make_he(s.sigma, s.tau, s.eta);
+    const Vec3 wo = direction(s.theta_o, 20);
+    auto bin_of = [&](const Vec3& w) {
+      const int i = std::min(static_cast<int>(std::acos(w.z()) / (kPi / 2) * kTheta), kTheta - 1);
+      double phi = std::atan2(w.y(), w.x());
+      if (phi < 0) phi += 2 * kPi;
+      return i * kPhi + std::min(static_cast<int>(phi / (2 * kPi) * kPhi), kPhi - 1);
+    };
+    std::vector<double> observed(kTheta * kPhi, 0.0), expected(kTheta * kPhi, 0.0);
+    for (int k = 0; k < kSamples; ++k) {
+      if (const auto wi = he.sample(wo, {uniform(rng), uniform(rng)})) observed[bin_of(*wi)] += 1;
+    }
+    // Expected counts: the pdf integrated over each bin (midpoint rule, kSub^2 points per bin).
+    const double d_theta = kPi / 2 / (kTheta * kSub), d_phi = 2 * kPi / (kPhi * kSub);
+    for (int i = 0; i < kTheta * kSub; ++i) {
+      const double theta = (i + 0.5) * d_theta;
+      for (int j = 0; j < kPhi * kSub; ++j) {
+        const Vec3 wi = spherical_direction(std::sin(theta), std::cos(theta), (j + 0.5) * d_phi);
+        expected[(i / kSub) * kPhi + j / kSub] +=
+            he.pdf(wi, wo) * std::sin(theta) * d_theta * d_phi * kSamples;
+      }
+    }
+    // Bins expecting fewer than 5 samples are pooled into one.
+    double chi2 = 0, pooled_observed = 0, pooled_expected = 0;
+    int dof = 0;
+    for (std::size_t b = 0; b < observed.size(); ++b) {
+      if (expected[b] < 5) {
+        pooled_observed += observed[b];
+        pooled_expected += expected[b];
+        continue;
+      }
+      chi2 += (observed[b] - expected[b]) * (observed[b] - expected[b]) / expected[b];
+      ++dof;
+    }
+    if (pooled_expected >= 5) {
+      chi2 += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) /
+              pooled_expected;
+      ++dof;
+    }
+    ASSERT_GT(dof, 20);
+    --dof;
+    // Wilson-Hilferty quantile of chi-square(dof) at z = 4 (p ~ 3e-5 per case).
+    const double k = 2.0 / (9.0 * dof);
+    const double critical = dof * std::pow(1 - k + 4.0 * std::sqrt(k), 3);
+    EXPECT_LT(chi2, critical) << "dof " << dof;
+  }
+}
+
+}  // namespace
+}  // namespace brdfnav
