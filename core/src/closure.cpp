@@ -49,14 +49,17 @@ std::optional<BsdfSample> Closure::sample(const Vec3& wo, double uc, const Vec2&
     wi = std::visit([&](const auto& l) { return l.sample(wo, u); }, lobe_);
   }
   if (!wi || wi->z() <= 0) return std::nullopt;
-  const double p = pdf(*wi, wo);
+  const double p = pdf(w, *wi, wo);
   if (!(p > 0)) return std::nullopt;
   return BsdfSample{*wi, eval(*wi, wo), p, false};
 }
 
 double Closure::pdf(const Vec3& wi, const Vec3& wo) const {
   if (wi.z() <= 0 || wo.z() <= 0) return 0.0;
-  const Weights w = weights(wo);
+  return pdf(weights(wo), wi, wo);
+}
+
+double Closure::pdf(const Weights& w, const Vec3& wi, const Vec3& wo) const {
   double p = w.diffuse * cosine_hemisphere_pdf(wi.z());
   if (w.lobe > 0) p += w.lobe * std::visit([&](const auto& l) { return l.pdf(wi, wo); }, lobe_);
   return p;

@@ -50,6 +50,8 @@ class Closure {
     double diffuse, lobe, mirror;  // selection probabilities, summing to 1 (or all 0)
   };
   Weights weights(const Vec3& wo) const;
+  // pdf() with the strategy weights at wo already known (sample() has them).
+  double pdf(const Weights& w, const Vec3& wi, const Vec3& wo) const;
 
   Lobe lobe_;
   Rgb rho_d_, rho_s_;

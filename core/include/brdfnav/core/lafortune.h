@@ -59,12 +59,14 @@ struct Lafortune {
     return cos_power_pdf(wi.dot(v) / len, n);
   }
   // The lobe is (n+2)/(2 pi) (|v|/max|c|)^n cos^n around v = c * wo: its mass is about
-  // (|v|/max|c|)^n, times the cosine of the axis.
+  // (|v|/max|c|)^n, times the cosine of the axis. The cosine is floored by what the half of the
+  // lobe above the horizon reflects when the axis lies on it (cz = 0): about 0.4/sqrt(n) for
+  // large n, 1/pi at n = 1. Without the floor such a lobe is never sampled though f > 0.
   double albedo_hint(const Vec3& wo) const {
     const Vec3 v = weighted(wo);
     const double len = v.norm();
     if (len <= 0) return 0.0;
-    return std::pow(len * inv_max_c, n) * std::max(v.z() / len, 0.0);
+    return std::pow(len * inv_max_c, n) * std::max(v.z() / len, 0.5 / std::sqrt(n + 2));
   }
 
  private:

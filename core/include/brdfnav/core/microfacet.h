@@ -31,14 +31,18 @@ inline double half_to_incident_pdf(double pdf_h, const Vec3& wo, const Vec3& h) 
   return wo_h > 0 ? pdf_h / (4.0 * wo_h) : 0.0;
 }
 
-// Beckmann distribution normalised so that integral D cos_h dw_h = 1 (slope RMS m).
+// Beckmann distribution normalised so that integral D cos_h dw_h = 1 (slope RMS m), from
+// 1 / cos_h^2 = 1 + tan^2(theta_h): callers holding the unnormalised H = wi + wo get it as
+// |H|^2 / H.z^2 without a square root.
+inline double beckmann_d_from_inv_cos2(double inv_cos2, double m) {
+  return std::exp((1.0 - inv_cos2) / (m * m)) * inv_cos2 * inv_cos2 / (kPi * m * m);
+}
+
 inline double beckmann_d(double cos_h, double m) {
   // Below 1e-8 the exponential is exactly 0 in double for every valid m (<= 1.5), while
   // cos_h^4 could underflow to 0 and turn the quotient into 0/0.
   if (cos_h <= 1e-8) return 0.0;
-  const double c2 = cos_h * cos_h;
-  const double tan2 = (1.0 - c2) / c2;
-  return std::exp(-tan2 / (m * m)) / (kPi * m * m * c2 * c2);
+  return beckmann_d_from_inv_cos2(1.0 / (cos_h * cos_h), m);
 }
 
 // Samples h with density D(h) cos_h for the Beckmann distribution.

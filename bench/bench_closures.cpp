@@ -1,0 +1,101 @@
+// Per-call cost of Closure::eval, pdf and sample for each model at its default (medium)
+// parameters, over pre-generated inputs so that random-number generation is not measured.
+// Targets (single thread): eval <= 50 ns for Blinn-Phong, Ward, Cook-Torrance and Lafortune,
+// <= 1 us for He. Results: bench/RESULTS.md.
+#include <benchmark/benchmark.h>
+#include <brdfnav/core/material.h>
+
+#include <random>
+#include <vector>
+
+namespace brdfnav {
+namespace {
+
+// A power of two, so the index wraps with a mask; small enough to stay in L1/L2.
+constexpr std::size_t kInputs = 4096;
+
+struct Inputs {
+  std::vector<Vec3> wi, wo;
+  std::vector<double> uc;
+  std::vector<Vec2> u;
+};
+
+Closure default_closure(ModelId id) {
+  Material m = default_material(id);
+  m.rho_d = Rgb(0.2, 0.15, 0.1);
+  m.rho_s = Rgb::Constant(0.5);
+  return make_closure(m);
+}
+
+// wo cosine-distributed, as a camera ray sees a surface; wi half from the closure's own sampler
+// (directions inside the lobe, where the costly branches run) and half uniform over the
+// hemisphere (light samples), so neither the fast zero paths nor the lobe peak dominate.
+Inputs make_inputs(const Closure& closure) {
+  std::mt19937_64 rng(12345);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const auto u2 = [&] {
+    const double u0 = uniform(rng), u1 = uniform(rng);
+    return Vec2(u0, u1);
+  };
+  Inputs in;
+  while (in.wo.size() < kInputs) {
+    const Vec3 wo = sample_cosine_hemisphere(u2());
+    if (wo.z() <= 1e-3) continue;
+    Vec3 wi = sample_cos_power(u2(), 0.0);  // uniform over the hemisphere
+    if (in.wo.size() % 2 == 0) {
+      const double uc = uniform(rng);
+      const auto s = closure.sample(wo, uc, u2());
+      if (!s) continue;
+      wi = s->wi;
+    }
+    in.wo.push_back(wo);
+    in.wi.push_back(wi);
+    in.uc.push_back(uniform(rng));
+    in.u.push_back(u2());
+  }
+  return in;
+}
+
+void BM_Eval(benchmark::State& state, ModelId id) {
+  const Closure closure = default_closure(id);
+  const Inputs in = make_inputs(closure);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(closure.eval(in.wi[i], in.wo[i]));
+    i = (i + 1) & (kInputs - 1);
+  }
+}
+
+void BM_Pdf(benchmark::State& state, ModelId id) {
+  const Closure closure = default_closure(id);
+  const Inputs in = make_inputs(closure);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(closure.pdf(in.wi[i], in.wo[i]));
+    i = (i + 1) & (kInputs - 1);
+  }
+}
+
+void BM_Sample(benchmark::State& state, ModelId id) {
+  const Closure closure = default_closure(id);
+  const Inputs in = make_inputs(closure);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(closure.sample(in.wo[i], in.uc[i], in.u[i]));
+    i = (i + 1) & (kInputs - 1);
+  }
+}
+
+#define BRDFNAV_BENCH_MODEL(model)                   \
+  BENCHMARK_CAPTURE(BM_Eval, model, ModelId::model); \
+  BENCHMARK_CAPTURE(BM_Pdf, model, ModelId::model);  \
+  BENCHMARK_CAPTURE(BM_Sample, model, ModelId::model)
+
+BRDFNAV_BENCH_MODEL(blinn_phong);
+BRDFNAV_BENCH_MODEL(ward);
+BRDFNAV_BENCH_MODEL(cook_torrance);
+BRDFNAV_BENCH_MODEL(lafortune);
+BRDFNAV_BENCH_MODEL(he);
+
+}  // namespace
+}  // namespace brdfnav

@@ -1,0 +1,186 @@
+// Spot values of the lobes, derived by hand from the formulas of
+// shared/reference/brdf-models.md at directions chosen so the half vector is simple. Every
+// literal is printed by a python3 one-liner given next to it, run with this preamble P:
+//   P='from math import *; d=lambda t,p: (sin(radians(t))*cos(radians(p)),
+//      sin(radians(t))*sin(radians(p)), cos(radians(t))); dot=lambda a,b: sum(x*y for x,y in
+//      zip(a,b))'
+//   python3 -c "$P; <one-liner>"
+// d(theta, phi) in degrees is the same direction as dir() below.
+#include <brdfnav/core/material.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <random>
+
+namespace brdfnav {
+namespace {
+
+// The lobes and the closure are deterministic formulas: only rounding separates them from the
+// python values.
+constexpr double kRelTol = 1e-9;
+
+Vec3 dir(double theta_deg, double phi_deg) {
+  const double t = theta_deg * kPi / 180, p = phi_deg * kPi / 180;
+  return spherical_direction(std::sin(t), std::cos(t), p);
+}
+
+void expect_rel(double actual, double expected) {
+  EXPECT_NEAR(actual, expected, kRelTol * std::abs(expected));
+}
+
+// The lobes return a grey Rgb; every channel must carry the value.
+void expect_grey(const Rgb& actual, double expected) {
+  for (int ch = 0; ch < 3; ++ch) expect_rel(actual[ch], expected);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Blinn-Phong: lobe = (n+2)/(8 pi) cos_h^n, pdf = (n+1)/(2 pi) cos_h^n / (4 wo.h)
+
+TEST(SpotBlinnPhong, HalfVectorAtThirtyDegrees) {
+  // wi = normal, wo at 60 deg: h bisects them at 30 deg, cos_h = cos 30, wo.h = cos 30.
+  const BlinnPhong lobe(std::array{10.0});
+  const Vec3 wi = dir(0, 0), wo = dir(60, 0);
+  // print(repr((10+2)/(8*pi)*cos(radians(30))**10))
+  expect_grey(lobe.eval(wi, wo), 0.1133046421035076);
+  // print(repr((10+1)/(2*pi)*cos(radians(30))**10/(4*cos(radians(30)))))
+  expect_rel(lobe.pdf(wi, wo), 0.1199301869679729);
+}
+
+TEST(SpotBlinnPhong, MirrorPairWithNonIntegerExponent) {
+  // wi and wo mirror each other about the normal: h = normal, cos_h = 1, wo.h = cos 37.
+  const BlinnPhong lobe(std::array{37.5});
+  const Vec3 wi = dir(37, 0), wo = dir(37, 180);
+  // print(repr((37.5+2)/(8*pi)))
+  expect_grey(lobe.eval(wi, wo), 1.5716550630324666);
+  // print(repr((37.5+1)/(2*pi)/(4*cos(radians(37)))))
+  expect_rel(lobe.pdf(wi, wo), 1.9181044518904249);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Ward: exp(-((H.x/ax)^2 + (H.y/ay)^2) / H.z^2) / (4 pi ax ay sqrt(cos_i cos_o)), H = wi + wo
+
+TEST(SpotWard, AlphaXStretchesTheLobeAlongX) {
+  // wo = normal, wi at 20 deg: H.x/H.z (or H.y/H.z) = sin 20 / (1 + cos 20) = tan 10.
+  // With alpha_x = 0.3 > alpha_y = 0.1, tilting h along x costs less than along y.
+  const Ward lobe(std::array{0.3, 0.1});
+  const Vec3 wo = dir(0, 0);
+  // print(repr(exp(-(tan(radians(10))/0.3)**2)/(4*pi*0.3*0.1*sqrt(cos(radians(20))))))
+  const double along_wide_axis = 1.9370710320321918;
+  // print(repr(exp(-(tan(radians(10))/0.1)**2)/(4*pi*0.3*0.1*sqrt(cos(radians(20))))))
+  const double along_narrow_axis = 0.12215243657865237;
+  expect_grey(lobe.eval(dir(20, 0), wo), along_wide_axis);
+  expect_grey(lobe.eval(dir(20, 90), wo), along_narrow_axis);
+  // The opposite order of the alphas swaps the axes.
+  const Ward swapped(std::array{0.1, 0.3});
+  expect_grey(swapped.eval(dir(20, 90), wo), along_wide_axis);
+  expect_grey(swapped.eval(dir(20, 0), wo), along_narrow_axis);
+  // pdf = exp(..) / (4 pi ax ay (h.wo) cos_h^3) with h at 10 deg: h.wo = cos_h = cos 10.
+  // print(repr(exp(-(tan(radians(10))/0.3)**2)/(4*pi*0.3*0.1*cos(radians(10))*cos(radians(10))**3)))
+  expect_rel(lobe.pdf(dir(20, 0), wo), 1.9963313130067433);
+}
+
+TEST(SpotWard, GeneralDirections) {
+  const Ward lobe(std::array{0.3, 0.1});
+  // wi=d(35,30); wo=d(38,215); H=[a+b for a,b in zip(wi,wo)];
+  // print(repr(exp(-((H[0]/0.3)**2+(H[1]/0.1)**2)/H[2]**2)/(4*pi*0.3*0.1*sqrt(wi[2]*wo[2]))))
+  expect_grey(lobe.eval(dir(35, 30), dir(38, 215)), 2.7836470903359807);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Cook-Torrance: F(wi.h) D(h) G / (4 cos_i cos_o), Schlick F, Beckmann D,
+// G = min(1, 2 cos_h cos_o / (wo.h), 2 cos_h cos_i / (wo.h))
+
+TEST(SpotCookTorrance, SchlickFresnelAtSeventyDegreesWithUnitG) {
+  // Mirror pair at 70 deg: h = normal, D = 1 / (pi m^2), wi.h = cos 70 so Schlick's
+  // (1 - cos)^5 term is far from zero; G = min(1, 2, 2) = 1.
+  const CookTorrance lobe(std::array{0.5, 0.3});
+  // F=0.5+0.5*(1-cos(radians(70)))**5; D=1/(pi*0.3**2); print(repr(F*D*1/(4*cos(radians(70))**2)))
+  expect_grey(lobe.eval(dir(70, 0), dir(70, 180)), 4.2454232000568455);
+}
+
+TEST(SpotCookTorrance, VGrooveMaskingBranch) {
+  // wi = normal, wo at 80 deg: h at 40 deg, cos_h = wo.h = cos 40, so the wo term of G is
+  // 2 cos 80 = 0.347 (the wi term is 2): masking picks the wo branch.
+  const CookTorrance lobe(std::array{0.5, 0.5});
+  // ch=cos(radians(40)); F=0.5+0.5*(1-ch)**5; D=exp(-tan(radians(40))**2/0.5**2)/(pi*0.5**2*ch**4);
+  // G=min(1, 2*ch*cos(radians(80))/ch, 2*ch*1/ch); print(G, repr(F*D*G/(4*1*cos(radians(80)))))
+  expect_grey(lobe.eval(dir(0, 0), dir(80, 0)), 0.055336551938445375);
+}
+
+TEST(SpotCookTorrance, VGrooveShadowingBranch) {
+  // The same pair swapped: now the wi term 2 cos_h cos_i / (wo.h) = 2 cos 80 is the minimum.
+  const CookTorrance lobe(std::array{0.5, 0.5});
+  // ch=cos(radians(40)); F=0.5+0.5*(1-ch)**5; D=exp(-tan(radians(40))**2/0.5**2)/(pi*0.5**2*ch**4);
+  // G=min(1, 2*ch*1/ch, 2*ch*cos(radians(80))/ch); print(G, repr(F*D*G/(4*cos(radians(80))*1)))
+  expect_grey(lobe.eval(dir(80, 0), dir(0, 0)), 0.055336551938445375);
+}
+
+TEST(SpotCookTorrance, OffNormalHalfVectorWithUnitG) {
+  // wi at 20 deg, wo at 40 deg on the other side: h is 10 deg off the normal, G = 1.
+  const CookTorrance lobe(std::array{0.5, 0.5});
+  // wi=d(20,0); wo=d(40,180); s=[a+b for a,b in zip(wi,wo)]; h=[x/sqrt(dot(s,s)) for x in s];
+  // ch=h[2]; F=0.5+0.5*(1-dot(wi,h))**5; D=exp(-(1-ch*ch)/ch**2/0.5**2)/(pi*0.5**2*ch**4);
+  // G=min(1, 2*ch*wo[2]/dot(wo,h), 2*ch*wi[2]/dot(wo,h)); print(G, repr(F*D*G/(4*wi[2]*wo[2])))
+  expect_grey(lobe.eval(dir(20, 0), dir(40, 180)), 0.207578468911294);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Lafortune: N max(0, cxy (wi.x wo.x + wi.y wo.y) + cz wi.z wo.z)^n,
+// cxy = -sqrt((1 - cz^2) / 2), N = (n+2) / (2 pi max(|cxy|, cz)^n)
+
+TEST(SpotLafortune, PhongPointIsACosineLobeAroundTheMirror) {
+  // cz = 1/sqrt(3) gives cxy = -1/sqrt(3), so the dot is (wi . mirror(wo)) / sqrt(3) and N
+  // cancels the 1/sqrt(3)^n: lobe = (n+2)/(2 pi) cos^n(angle between wi and mirror(wo)).
+  const Lafortune lobe(std::array{1 / std::sqrt(3.0), 20.0});
+  // mirror(d(40, 0)) = d(40, 180); wi = d(55, 180) is 15 deg from it.
+  // print(repr((20+2)/(2*pi)*cos(radians(15))**20))
+  expect_grey(lobe.eval(dir(55, 180), dir(40, 0)), 1.7503237047947373);
+
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < 200; ++i) {
+    const Vec3 wi = dir(90 * u(rng), 360 * u(rng)), wo = dir(90 * u(rng), 360 * u(rng));
+    const Vec3 mirror(-wo.x(), -wo.y(), wo.z());
+    const double phong = (20 + 2) / (2 * kPi) * std::pow(std::max(0.0, wi.dot(mirror)), 20);
+    expect_grey(lobe.eval(wi, wo), phong);
+  }
+}
+
+TEST(SpotLafortune, CzBelowThePhongPointNormalisesByCxy) {
+  // cz = 0.5: |cxy| = sqrt(0.375) = 0.612 > cz, so N divides by |cxy|^n.
+  const Lafortune lobe(std::array{0.5, 8.0});
+  // cz=0.5; cxy=-sqrt((1-cz*cz)/2); n=8; wi=d(25,200); wo=d(40,30);
+  // s=cxy*(wi[0]*wo[0]+wi[1]*wo[1])+cz*wi[2]*wo[2];
+  // print(repr((n+2)/(2*pi*max(abs(cxy),cz)**n)*max(0,s)**n))
+  expect_grey(lobe.eval(dir(25, 200), dir(40, 30)), 0.37394186505507815);
+}
+
+TEST(SpotLafortune, CzAboveThePhongPointNormalisesByCz) {
+  // cz = 0.8: |cxy| = sqrt(0.18) = 0.424 < cz, so N divides by cz^n.
+  const Lafortune lobe(std::array{0.8, 3.0});
+  // cz=0.8; cxy=-sqrt((1-cz*cz)/2); n=3; wi=d(25,200); wo=d(40,30);
+  // s=cxy*(wi[0]*wo[0]+wi[1]*wo[1])+cz*wi[2]*wo[2];
+  // print(repr((n+2)/(2*pi*max(abs(cxy),cz)**n)*max(0,s)**n))
+  expect_grey(lobe.eval(dir(25, 200), dir(40, 30)), 0.4652024401282725);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The closure: f = rho_d / pi + rho_s * lobe, per RGB channel
+
+TEST(SpotClosure, ComposesRgbDiffuseAndLobe) {
+  Material m = default_material(ModelId::ward);
+  m.params = {0.3, 0.1};
+  m.rho_d = Rgb(0.1, 0.2, 0.3);
+  m.rho_s = Rgb(0.9, 0.5, 0.25);
+  const Closure closure = make_closure(m);
+  // The Ward pair of AlphaXStretchesTheLobeAlongX, lobe value l:
+  // l=exp(-(tan(radians(10))/0.3)**2)/(4*pi*0.3*0.1*sqrt(cos(radians(20))));
+  // print([repr(rd/pi+rs*l) for rd,rs in ((0.1,0.9),(0.2,0.5),(0.3,0.25))])
+  const Rgb f = closure.eval(dir(20, 0), dir(0, 0));
+  expect_rel(f[0], 1.7751949174473516);
+  expect_rel(f[1], 1.032197493252854);
+  expect_rel(f[2], 0.5797607238631851);
+}
+
+}  // namespace
+}  // namespace brdfnav
