@@ -5,11 +5,21 @@
 
 namespace brdfnav {
 
-ParamGrid::ParamGrid(std::span<const ParamSpec> specs) : specs_(specs) {
-  for (const ParamSpec& p : specs) {
-    axes_.push_back(grid_nodes(p));
+namespace {
+std::vector<std::vector<double>> table_axes(std::span<const ParamSpec> specs) {
+  std::vector<std::vector<double>> axes;
+  for (const ParamSpec& p : specs) axes.push_back(grid_nodes(p));
+  return axes;
+}
+}  // namespace
+
+ParamGrid::ParamGrid(std::span<const ParamSpec> specs) : ParamGrid(specs, table_axes(specs)) {}
+
+ParamGrid::ParamGrid(std::span<const ParamSpec> specs, std::vector<std::vector<double>> axes)
+    : specs_(specs), axes_(std::move(axes)) {
+  for (const std::vector<double>& axis : axes_) {
     strides_.push_back(node_count_);
-    node_count_ *= axes_.back().size();
+    node_count_ *= axis.size();
   }
 }
 

@@ -12,7 +12,10 @@ namespace brdfnav {
 
 class ParamGrid {
  public:
+  // The table's own grid (Table 1 of the paper).
   explicit ParamGrid(std::span<const ParamSpec> specs);
+  // Other increasing nodes per parameter (a coarser or denser precompute profile).
+  ParamGrid(std::span<const ParamSpec> specs, std::vector<std::vector<double>> axes);
 
   std::size_t dimensions() const { return axes_.size(); }
   std::size_t node_count() const { return node_count_; }

@@ -1,0 +1,56 @@
+// BRDF images in memory and on disk, and the paper's metric between them (section 2.1):
+//   d(A, B) = sqrt(mean over covered pixels and the 3 channels of (cbrt(A) - cbrt(B))^2).
+// The RMS form makes a radius mean the same at any resolution; it is brdfnav's unit of distance.
+#pragma once
+
+#include <brdfnav/core/math.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace brdfnav {
+
+// Unreadable image, mismatched sizes or masks; names the file when there is one.
+class ImageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Linear float RGBA, row 0 at the top. Alpha is coverage (0 or 1): the metric's mask.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<float> rgba;
+
+  Image() = default;
+  Image(int w, int h) : width(w), height(h), rgba(static_cast<std::size_t>(w) * h * 4, 0.f) {}
+
+  float* pixel(int x, int y) { return &rgba[4 * (static_cast<std::size_t>(y) * width + x)]; }
+  const float* pixel(int x, int y) const {
+    return &rgba[4 * (static_cast<std::size_t>(y) * width + x)];
+  }
+  bool covered(int x, int y) const { return pixel(x, y)[3] > 0.5f; }
+};
+
+// rho_d * diffuse + rho_s * specular per channel (computed in double, stored as float); alpha is
+// the common mask. Throws ImageError when sizes or masks differ.
+Image compose(const Image& diffuse, const Image& specular, const Rgb& rho_d, const Rgb& rho_s);
+
+// The metric. Throws ImageError when the sizes or the masks (alpha) differ, or no pixel is covered.
+double image_distance(const Image& a, const Image& b);
+
+// Metadata written as string attributes of the EXR header (e.g. {"brdfnav:material", spec}).
+using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
+
+// Writes linear float RGBA OpenEXR atomically: on any failure no file is left behind (and an
+// existing file is untouched). Throws ImageError naming the file.
+void write_exr(const Image& image, const std::filesystem::path& path,
+               const ImageMetadata& metadata = {});
+// Reads an RGBA image (any format OpenImageIO reads; RGB gets alpha 1). Throws ImageError.
+Image read_image(const std::filesystem::path& path);
+// The string attributes of an image file's header that start with "brdfnav:".
+ImageMetadata read_image_metadata(const std::filesystem::path& path);
+
+}  // namespace brdfnav

@@ -1,0 +1,136 @@
+#include <brdfnav/precompute/embedding.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace brdfnav {
+
+namespace {
+
+// Masked pixels of one image, one channel each: pixels x 3.
+Eigen::MatrixXf masked_channels(const Image& image, const Image& mask_source,
+                                const std::vector<std::size_t>& covered) {
+  if (image.width != mask_source.width || image.height != mask_source.height)
+    throw ImageError("embedding: image size " + std::to_string(image.width) + "x" +
+                     std::to_string(image.height) + " differs from the diffuse image's");
+  Eigen::MatrixXf out(static_cast<Eigen::Index>(covered.size()), 3);
+  for (std::size_t i = 0; i < covered.size(); ++i) {
+    const float* px = &image.rgba[4 * covered[i]];
+    if (px[3] < 0.5f) throw ImageError("embedding: image mask differs from the diffuse image's");
+    for (int c = 0; c < 3; ++c) out(static_cast<Eigen::Index>(i), c) = px[c];
+  }
+  return out;
+}
+
+std::vector<std::size_t> covered_pixels(const Image& diffuse) {
+  std::vector<std::size_t> covered;
+  for (std::size_t i = 0; i < diffuse.rgba.size() / 4; ++i)
+    if (diffuse.rgba[4 * i + 3] > 0.5f) covered.push_back(i);
+  if (covered.empty()) throw ImageError("embedding: the diffuse image covers no pixel");
+  return covered;
+}
+
+// Locates q on the cube-root q axis: (index, fraction) into q_nodes.
+std::pair<std::size_t, double> locate_q(const std::vector<double>& nodes, double q) {
+  const double x = std::cbrt(std::clamp(q, 0.0, 1.0));
+  std::size_t i = 0;
+  while (i + 2 < nodes.size() && std::cbrt(nodes[i + 1]) <= x) ++i;
+  const double lo = std::cbrt(nodes[i]), hi = std::cbrt(nodes[i + 1]);
+  return {i, std::clamp((x - lo) / (hi - lo), 0.0, 1.0)};
+}
+
+}  // namespace
+
+std::vector<double> diffuse_fraction_nodes(int count) {
+  std::vector<double> q(count);
+  for (int i = 0; i < count; ++i) q[i] = std::pow(double(i) / (count - 1), 3.0);
+  q.back() = 1.0;
+  return q;
+}
+
+ModelEmbedding::ModelEmbedding(ModelId model, ParamGrid grid, std::vector<double> q_nodes,
+                               Eigen::MatrixXf coefficients)
+    : model_(model),
+      grid_(std::move(grid)),
+      q_nodes_(std::move(q_nodes)),
+      coefficients_(std::move(coefficients)) {}
+
+Eigen::VectorXf ModelEmbedding::channel(const std::vector<ParamGrid::Corner>& corners, double q,
+                                        int c) const {
+  const auto [qi, qt] = locate_q(q_nodes_, q);
+  const std::size_t nodes = grid_.node_count();
+  Eigen::VectorXf out = Eigen::VectorXf::Zero(coefficients_.rows());
+  for (int dq = 0; dq < 2; ++dq) {
+    const double wq = dq == 0 ? 1 - qt : qt;
+    if (wq == 0) continue;
+    for (const ParamGrid::Corner& k : corners) {
+      const auto column = static_cast<Eigen::Index>(((qi + dq) * nodes + k.node) * 3 + c);
+      out += static_cast<float>(wq * k.weight) * coefficients_.col(column);
+    }
+  }
+  return out;
+}
+
+Eigen::VectorXf ModelEmbedding::embed(const Material& m) const {
+  const std::vector<ParamGrid::Corner> corners = grid_.corners(m.params);
+  const Eigen::Index k = coefficients_.rows();
+  Eigen::VectorXf out(3 * k);
+  for (int c = 0; c < 3; ++c) {
+    const double s = m.rho_d[c] + m.rho_s[c];
+    if (!(s > 0)) {
+      out.segment(c * k, k).setZero();  // black channel: the cube-root image is 0
+      continue;
+    }
+    out.segment(c * k, k) = static_cast<float>(std::cbrt(s)) * channel(corners, m.rho_d[c] / s, c);
+  }
+  return out;
+}
+
+Embedding build_embedding(const Image& diffuse, const std::vector<ModelImages>& models,
+                          const std::vector<double>& q_nodes, const PcaOptions& options) {
+  const std::vector<std::size_t> covered = covered_pixels(diffuse);
+  const Eigen::MatrixXf id = masked_channels(diffuse, diffuse, covered);
+  std::vector<Eigen::MatrixXf> spec;  // every model's node images, in model order
+  std::vector<std::size_t> first_column;
+  std::size_t cols = 0;
+  for (const ModelImages& m : models) {
+    first_column.push_back(cols);
+    for (const Image& img : m.specular) spec.push_back(masked_channels(img, diffuse, covered));
+    cols += q_nodes.size() * m.grid.node_count() * 3;
+  }
+
+  // Column j of the data matrix: model by first_column, then (qi * nodes + node) * 3 + channel;
+  // scaled by 1/sqrt(3 * pixels) so that Euclidean distance is the RMS metric.
+  const float norm = 1.0f / std::sqrt(3.0f * static_cast<float>(covered.size()));
+  const auto column = [&](std::size_t j, Eigen::Ref<Eigen::VectorXf> out) {
+    const std::size_t mi =
+        std::upper_bound(first_column.begin(), first_column.end(), j) - first_column.begin() - 1;
+    const std::size_t nodes = models[mi].grid.node_count(), local = j - first_column[mi];
+    std::size_t image = local / 3 % nodes;
+    for (std::size_t i = 0; i < mi; ++i) image += models[i].grid.node_count();
+    const double q = q_nodes[local / 3 / nodes];
+    const auto c = static_cast<Eigen::Index>(local % 3);
+    const Eigen::MatrixXf& s = spec[image];
+    for (Eigen::Index p = 0; p < out.size(); ++p)
+      out[p] = norm * std::cbrt(float(q) * id(p, c) + float(1 - q) * s(p, c));
+  };
+  const ColumnBlockSource source = [&](std::size_t first, Eigen::Ref<Eigen::MatrixXf> block) {
+    for (Eigen::Index b = 0; b < block.cols(); ++b) column(first + b, block.col(b));
+  };
+
+  Embedding e;
+  e.basis = uncentered_pca(covered.size(), cols, source, options);
+  Eigen::VectorXf x(static_cast<Eigen::Index>(covered.size()));
+  for (std::size_t mi = 0; mi < models.size(); ++mi) {
+    const std::size_t n = q_nodes.size() * models[mi].grid.node_count() * 3;
+    Eigen::MatrixXf coeffs(e.basis.vectors.cols(), static_cast<Eigen::Index>(n));
+    for (std::size_t j = 0; j < n; ++j) {
+      column(first_column[mi] + j, x);
+      coeffs.col(static_cast<Eigen::Index>(j)).noalias() = e.basis.vectors.transpose() * x;
+    }
+    e.models.emplace_back(models[mi].model, models[mi].grid, q_nodes, std::move(coeffs));
+  }
+  return e;
+}
+
+}  // namespace brdfnav
