@@ -5,6 +5,10 @@
 
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/core/material.h>
+#include <brdfnav/precompute/render.h>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -93,19 +97,55 @@ void print_albedo_table(const std::filesystem::path& dir) {
   write_file_atomic(dir / "albedo.csv", csv.str());
 }
 
+// Every setting rendered on the sphere under the environment, in one labelled sheet (sRGB).
+void write_sphere_sheet(const std::filesystem::path& dir, const SceneOptions& scene_options) {
+  namespace IBA = OIIO::ImageBufAlgo;
+  const EnvMap env = load_env(scene_options);
+  const Scene scene = load_scene(scene_options);
+  Renderer renderer(env, scene, scene_options.resolution);
+  const int res = scene_options.resolution, label = 22, columns = 5;
+  const int rows = static_cast<int>((std::size(kSettings) + columns - 1) / columns);
+  OIIO::ImageBuf sheet(
+      OIIO::ImageSpec(columns * res, rows * (res + label), 3, OIIO::TypeDesc::FLOAT));
+  IBA::fill(sheet, {0.18f, 0.18f, 0.18f});
+  for (std::size_t k = 0; k < std::size(kSettings); ++k) {
+    Material m = parse_material_spec(kSettings[k].spec);
+    m.rho_d = Rgb::Constant(0.05), m.rho_s = Rgb::Constant(0.5);
+    const Image img = renderer.render(m);
+    OIIO::ImageBuf tile(OIIO::ImageSpec(res, res, 4, OIIO::TypeDesc::FLOAT));
+    tile.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, img.rgba.data());
+    const int x = int(k % columns) * res, y = int(k / columns) * (res + label);
+    IBA::paste(sheet, x, y, 0, 0, IBA::colorconvert(tile, "linear", "sRGB"),
+               OIIO::ROI(0, res, 0, res, 0, 1, 0, 3));
+    IBA::render_text(sheet, x + 4, y + res + 16, kSettings[k].label, 12, "DejaVuSans");
+    std::fprintf(stderr, "rendered %s\n", kSettings[k].label);
+  }
+  sheet.set_write_format(OIIO::TypeDesc::UINT8);
+  AtomicOutput out(dir / "spheres.png");
+  if (!sheet.write(out.temp_path().string()))
+    throw std::runtime_error((dir / "spheres.png").string() + ": " + sheet.geterror());
+  out.commit();
+}
+
 }  // namespace
 
 void add_demo_command(CLI::App& app) {
-  auto* demo = app.add_subcommand("demo", "Plot the five models' lobes and tabulate their albedo");
+  auto* demo = app.add_subcommand(
+      "demo", "Plot the five models' lobes, tabulate their albedo and render them on a sphere");
   auto out = std::make_shared<std::string>("out/demo");
+  auto scene = std::make_shared<SceneOptions>();
+  scene->resolution = 128;
   demo->add_option("--out", *out, "Output directory")->capture_default_str();
+  add_scene_options(*demo, *scene);
   demo->callback([=] {
     const std::filesystem::path dir(*out);
     std::filesystem::create_directories(dir);
     write_lobe_plot(dir);
     print_albedo_table(dir);
-    std::printf("\nWrote %s, %s and %s\n", (dir / "lobes.png").c_str(), (dir / "lobes.csv").c_str(),
-                (dir / "albedo.csv").c_str());
+    write_sphere_sheet(dir, *scene);
+    std::printf("\nWrote %s (lobes), %s (the settings on a sphere), %s and %s\n",
+                (dir / "lobes.png").c_str(), (dir / "spheres.png").c_str(),
+                (dir / "lobes.csv").c_str(), (dir / "albedo.csv").c_str());
   });
 }
 

@@ -7,13 +7,32 @@
 
 #include <string>
 
+namespace brdfnav {
+class EnvMap;
+class Scene;
+}  // namespace brdfnav
+
 namespace brdfnav::cli {
 
-void add_eval_commands(CLI::App& app);  // eval, models
-void add_demo_command(CLI::App& app);   // demo
+void add_eval_commands(CLI::App& app);    // eval, models
+void add_demo_command(CLI::App& app);     // demo
+void add_render_commands(CLI::App& app);  // render, distance
+void add_precompute_commands(CLI::App& app);  // precompute, db-info
+
+// The options every command that renders shares: --env, --sanitize-env, --res, --scene.
+struct SceneOptions {
+  std::string env = "/usr/share/blender/datafiles/studiolights/world/interior.exr";
+  bool sanitize_env = false;
+  int resolution = 320;
+  std::string scene = "sphere";
+};
+void add_scene_options(CLI::App& cmd, SceneOptions& options);
 
 // "x,y,z" -> normalised vector; throws std::runtime_error naming `option` when it is not three
 // finite numbers or has zero length.
 Vec3 parse_direction(const std::string& text, const std::string& option);
+
+EnvMap load_env(const SceneOptions& options);
+Scene load_scene(const SceneOptions& options);
 
 }  // namespace brdfnav::cli

@@ -11,6 +11,8 @@ int main(int argc, char** argv) {
   app.set_help_all_flag("--help-all", "Help for every command");
   brdfnav::cli::add_eval_commands(app);
   brdfnav::cli::add_demo_command(app);
+  brdfnav::cli::add_render_commands(app);
+  brdfnav::cli::add_precompute_commands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

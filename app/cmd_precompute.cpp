@@ -1,0 +1,118 @@
+// `brdfnav precompute`: builds the navigation database (docs/DATABASE.md); `brdfnav db-info`:
+// verifies one and prints what it holds.
+#include "commands.h"
+#include "progress.h"
+
+#include <brdfnav/precompute/database.h>
+
+#include <cstdio>
+#include <stdexcept>
+#include <tuple>
+
+namespace brdfnav::cli {
+
+namespace {
+
+// One progress bar per phase, each line of the log on stderr.
+PrecomputeObserver stderr_observer() {
+  auto phase = std::make_shared<std::string>();
+  auto sink = std::make_shared<ProgressSink>();
+  PrecomputeObserver o;
+  o.progress = [=](const std::string& name, std::size_t done, std::size_t total) {
+    if (name != *phase) *phase = name, *sink = stderr_progress(name);
+    (*sink)(int(done), int(total));
+  };
+  o.log = [](const std::string& line) { std::fprintf(stderr, "brdfnav: %s\n", line.c_str()); };
+  return o;
+}
+
+void print_info(const Database& db) {
+  const Manifest& m = db.manifest();
+  std::printf("database: %s\nformat: %d\nprofile: %s\nresolution: %d\nscene: %s\n",
+              db.dir().string().c_str(), m.format_version, m.profile.c_str(), m.resolution,
+              m.scene.c_str());
+  std::printf("environment: %s (pixel sha1 %s)\ncomponents: %d\nq nodes: %zu\n", m.env_path.c_str(),
+              m.env_hash.c_str(), m.components, m.q_nodes.size());
+  for (const ProfileGrid& g : m.grids)
+    std::printf("model %s: %zu nodes\n", std::string(model_info(g.model).name).c_str(),
+                g.grid.node_count());
+  std::printf("files: %zu (all checksums verified)\n", m.files.size());
+}
+
+// "i/N" -> (i, N); throws std::runtime_error naming --shard unless 0 <= i < N.
+std::pair<int, int> parse_shard(const std::string& text) {
+  int i = -1, n = 0;
+  char end = 0;
+  if (std::sscanf(text.c_str(), "%d/%d%c", &i, &n, &end) != 2 || n < 1 || i < 0 || i >= n)
+    throw std::runtime_error("--shard: '" + text + "' is not i/N with 0 <= i < N");
+  return {i, n};
+}
+
+void add_merge_command(CLI::App& precompute) {
+  auto* merge = precompute.add_subcommand(
+      "merge", "Join the shards of a sharded precompute into the database (embedding and fits)");
+  auto shards = std::make_shared<std::vector<std::string>>();
+  auto out = std::make_shared<std::string>();
+  auto threads = std::make_shared<int>(0);
+  merge->add_option("shards", *shards, "Shard directories (every i of --shard i/N)")->required();
+  merge->add_option("--out,-o", *out, "Database directory to create (must not exist)")->required();
+  merge->add_option("--threads", *threads, "Worker threads (0: all)")
+      ->check(CLI::NonNegativeNumber);
+  merge->callback([=] {
+    // The profile, environment and scene are the first shard's; merge_shards checks the others.
+    const ShardOrigin origin = read_shard_origin(shards->front());
+    PrecomputeRequest request{make_profile(origin.profile), *out, false, *threads,
+                              stderr_observer()};
+    request.profile.resolution = origin.resolution;
+    SceneOptions scene;
+    scene.env = origin.env_path;
+    scene.scene = origin.scene;
+    const EnvMap env = load_env(scene);
+    const Scene geometry = load_scene(scene);
+    merge_shards({shards->begin(), shards->end()}, request, env, geometry);
+  });
+}
+
+}  // namespace
+
+void add_precompute_commands(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "precompute", "Pre-render every model's grid, build the embedding and the conversion fits");
+  auto profile = std::make_shared<std::string>("default");
+  auto scene = std::make_shared<SceneOptions>();
+  auto out = std::make_shared<std::string>();
+  auto resume = std::make_shared<bool>(false);
+  auto threads = std::make_shared<int>(0);
+  auto shard = std::make_shared<std::string>("0/1");
+  cmd->add_option("--profile", *profile, "Grid density: test, default or paper")
+      ->capture_default_str()
+      ->check(CLI::IsMember(profile_names()));
+  add_scene_options(*cmd, *scene);
+  cmd->get_option("--res")->default_str("the profile's");
+  cmd->add_option("--out,-o", *out, "Database (or shard) directory to create (must not exist)");
+  cmd->add_flag("--resume", *resume,
+                "Reuse the finished work of an interrupted run in OUT.partial");
+  cmd->add_option("--threads", *threads, "Worker threads (0: all)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--shard", *shard, "Render only the deterministic part i of N (i/N) as a shard")
+      ->capture_default_str();
+  cmd->require_subcommand(0, 1);
+  add_merge_command(*cmd);
+  cmd->callback([=] {
+    if (!cmd->get_subcommands().empty()) return;  // `precompute merge` did the work
+    if (out->empty()) throw std::runtime_error("precompute: --out is required");
+    PrecomputeRequest request{make_profile(*profile), *out, *resume, *threads, stderr_observer()};
+    std::tie(request.shard_index, request.shard_count) = parse_shard(*shard);
+    // --res overrides the profile's resolution only when given.
+    if (cmd->count("--res") > 0) request.profile.resolution = scene->resolution;
+    const EnvMap env = load_env(*scene);
+    const Scene geometry = load_scene(*scene);
+    precompute_database(request, env, geometry);
+  });
+
+  auto* info = app.add_subcommand("db-info", "Verify a database and print what it holds");
+  auto dir = std::make_shared<std::string>();
+  info->add_option("dir", *dir, "Database directory")->required();
+  info->callback([=] { print_info(Database::open(*dir)); });
+}
+
+}  // namespace brdfnav::cli

@@ -1,0 +1,59 @@
+// `brdfnav render`: a material's BRDF image under an environment map; `brdfnav distance`: the
+// metric between two images.
+#include "commands.h"
+#include "progress.h"
+
+#include <brdfnav/io/material_yaml.h>
+#include <brdfnav/precompute/render.h>
+
+#include <cstdio>
+
+namespace brdfnav::cli {
+
+void add_scene_options(CLI::App& cmd, SceneOptions& o) {
+  cmd.add_option("--env", o.env, "Lat-long HDR environment map (any format OpenImageIO reads)")
+      ->capture_default_str();
+  cmd.add_flag("--sanitize-env", o.sanitize_env, "Replace NaN/Inf texels by 0 instead of failing");
+  cmd.add_option("--res", o.resolution, "Image width and height in pixels")
+      ->capture_default_str()
+      ->check(CLI::Range(8, 4096));
+  cmd.add_option("--scene", o.scene, "'sphere' or a triangle mesh (OBJ)")->capture_default_str();
+}
+
+Scene load_scene(const SceneOptions& o) {
+  return o.scene == "sphere" ? Scene::sphere() : Scene::load_obj(o.scene);
+}
+
+EnvMap load_env(const SceneOptions& o) {
+  return EnvMap::load(o.env, EnvLoadOptions{o.sanitize_env});
+}
+
+void add_render_commands(CLI::App& app) {
+  auto* render = app.add_subcommand(
+      "render", "Render a material on the scene under the environment map (linear RGBA EXR)");
+  auto scene = std::make_shared<SceneOptions>();
+  auto material = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  render->add_option("--material,-m", *material, "YAML file or inline spec")->required();
+  add_scene_options(*render, *scene);
+  render->add_option("--out,-o", *out, "Output OpenEXR file (written atomically)")->required();
+  render->callback([=] {
+    const Material m = load_material(*material);
+    const EnvMap env = load_env(*scene);
+    const Scene geometry = load_scene(*scene);
+    RenderOptions options;
+    options.progress = stderr_progress("render");
+    Renderer renderer(env, geometry, scene->resolution, options);
+    write_exr(renderer.render(m), *out, render_metadata(renderer, &m));
+  });
+
+  auto* distance = app.add_subcommand(
+      "distance", "Print the cube-root RMS distance between two BRDF images (same mask)");
+  auto a = std::make_shared<std::string>(), b = std::make_shared<std::string>();
+  distance->add_option("a", *a, "First image")->required();
+  distance->add_option("b", *b, "Second image")->required();
+  distance->callback(
+      [=] { std::printf("%.9g\n", image_distance(read_image(*a), read_image(*b))); });
+}
+
+}  // namespace brdfnav::cli

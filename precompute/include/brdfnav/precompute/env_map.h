@@ -1,0 +1,76 @@
+// Latitude-longitude HDR environment maps: loading (anything OpenImageIO reads), validation and
+// the orientation convention shared by every renderer of brdfnav.
+//
+// Orientation (world: y up; the camera sits on +z looking toward -z, +x to its right):
+//   u = 0.5 + atan2(-x, z) / (2 pi),  v = acos(y) / pi,
+// with u across the columns (left to right) and v down the rows (row 0 is the zenith). The centre
+// of the map (u, v) = (0.5, 0.5) is the direction +z, i.e. toward the camera, so a mirror sphere
+// shows the middle of the map in its middle; seen from inside the sphere of directions, u grows
+// to the right (the map is not mirrored).
+#pragma once
+
+#include <brdfnav/core/math.h>
+
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace brdfnav {
+
+// The map the paper's metric uses unless told otherwise (Debian blender-data, CC0).
+inline constexpr const char* kDefaultEnvPath =
+    "/usr/share/blender/datafiles/studiolights/world/interior.exr";
+
+// A map that cannot be used: the message names the file and what is wrong.
+class EnvMapError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Receives one line per warning (no trailing newline).
+using WarningSink = std::function<void(const std::string&)>;
+// Writes "brdfnav: warning: LINE" to stderr.
+void warn_to_stderr(const std::string& line);
+
+struct EnvLoadOptions {
+  // Replace NaN and infinite texels by 0 (with one warning line) instead of rejecting the map.
+  bool sanitize = false;
+};
+
+class EnvMap {
+ public:
+  // Reads the first three channels of subimage 0 as linear RGB. Throws EnvMapError when the file
+  // is missing or unreadable, has fewer than 3 channels, is not exactly 2:1, or (without
+  // `sanitize`) holds NaN/Inf texels. Negative components are clamped to 0 with one warning.
+  static EnvMap load(const std::filesystem::path& path, const EnvLoadOptions& options = {},
+                     const WarningSink& warn = warn_to_stderr);
+
+  // An in-memory map (synthetic environments, tests): `rgb` holds width * height * 3 finite,
+  // non-negative floats, row 0 first; width must be 2 * height. Throws EnvMapError otherwise.
+  EnvMap(int width, int height, std::vector<float> rgb, std::string source);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  Rgb texel(int x, int y) const {
+    const float* p = &rgb_[3 * (static_cast<std::size_t>(y) * width_ + x)];
+    return {p[0], p[1], p[2]};
+  }
+  const std::vector<float>& pixels() const { return rgb_; }
+  // The file path, or the description given to the in-memory constructor.
+  const std::string& source() const { return source_; }
+  // SHA-1 of the texels as rendered (after clamping/sanitising), for provenance.
+  const std::string& pixel_hash() const { return hash_; }
+
+  // World direction of map coordinates (u, v) in [0, 1]^2, and back (see the file comment).
+  static Vec3 direction(double u, double v);
+  static Vec2 texcoord(const Vec3& direction);
+
+ private:
+  int width_ = 0, height_ = 0;
+  std::vector<float> rgb_;
+  std::string source_, hash_;
+};
+
+}  // namespace brdfnav

@@ -1,0 +1,50 @@
+// Precompute profiles: how dense the database's grids are, at what resolution its images are
+// rendered and how many embedding coefficients it keeps (issue #4). Every value of a profile is
+// recorded in the database manifest, so a database says exactly how it was made.
+#pragma once
+
+#include <brdfnav/core/grid.h>
+#include <brdfnav/core/models.h>
+#include <brdfnav/precompute/fit.h>
+#include <brdfnav/precompute/pca.h>
+#include <brdfnav/precompute/render.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace brdfnav {
+
+class ProfileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// One model's grid in a profile.
+struct ProfileGrid {
+  ModelId model;
+  ParamGrid grid;
+};
+
+struct Profile {
+  std::string name;
+  int resolution = 128;
+  std::vector<ProfileGrid> grids;  // in ModelId order; the named profiles have every model
+  int q_nodes = 9;                 // samples of rho_d / (rho_d + rho_s) for the embedding
+  PcaOptions pca;                  // pca.components: coefficients kept per channel
+  RenderQuality quality;
+  FitOptions fit;
+
+  // The grid of `id`, or nullptr when the profile leaves the model out.
+  const ParamGrid* grid(ModelId id) const;
+  // Total rendered images: the diffuse image plus one specular image per grid node.
+  std::size_t image_count() const;
+};
+
+// "paper": Table 1 grids at 320 x 320 with 200 coefficients; "default": the same grids at
+// 128 x 128 (what `./run demo` uses); "test": small grids at 8 x 8 for CI (the renderer's speed
+// sets this). Throws ProfileError for any other name.
+Profile make_profile(const std::string& name);
+const std::vector<std::string>& profile_names();
+
+}  // namespace brdfnav

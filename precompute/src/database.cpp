@@ -1,0 +1,132 @@
+// Database::open(): verification of a database directory and loading of its tables.
+#include "database_format.h"
+
+#include <OpenImageIO/imageio.h>
+
+namespace brdfnav {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string attribute(const OIIO::ImageSpec& spec, const char* name) {
+  return spec.get_string_attribute(name);
+}
+
+// Every listed file exists with its checksum, and every file the grids imply is listed.
+void check_files(const fs::path& dir, const Manifest& m) {
+  const std::string manifest = (dir / db::kManifestFile).string();
+  for (const std::string& f : db::database_files(m.grids))
+    if (!m.files.contains(f)) throw DatabaseError(manifest + ": does not list the file " + f);
+  for (const auto& [name, sha] : m.files) {
+    const fs::path path = dir / name;
+    if (!fs::exists(path)) throw DatabaseError(path.string() + ": missing");
+    if (file_sha1(path) != sha)
+      throw DatabaseError(path.string() +
+                          ": checksum mismatch (the file is corrupt or from another database)");
+  }
+}
+
+// An image belongs to the database when its size, its mask and the environment, scene and
+// resolution in its header are the manifest's.
+void check_image(const fs::path& path, const Manifest& m, const Image& diffuse) {
+  const std::string file = path.string();
+  auto in = OIIO::ImageInput::open(file);
+  if (!in) throw DatabaseError(file + ": cannot read: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width != m.resolution || spec.height != m.resolution)
+    throw DatabaseError(file + ": image is " + std::to_string(spec.width) + "x" +
+                        std::to_string(spec.height) + ", the manifest says " +
+                        std::to_string(m.resolution));
+  if (attribute(spec, "brdfnav:env_sha1") != m.env_hash)
+    throw DatabaseError(file + ": rendered under another environment map (pixel SHA-1 " +
+                        attribute(spec, "brdfnav:env_sha1") + ", the manifest says " + m.env_hash +
+                        ")");
+  if (attribute(spec, "brdfnav:scene") != m.scene)
+    throw DatabaseError(file + ": rendered with scene '" + attribute(spec, "brdfnav:scene") +
+                        "', the manifest says '" + m.scene + "'");
+  in.reset();
+  if (diffuse.rgba.empty()) return;
+  const Image image = read_image(path);
+  for (std::size_t i = 3; i < image.rgba.size(); i += 4)
+    if ((image.rgba[i] > 0.5f) != (diffuse.rgba[i] > 0.5f))
+      throw DatabaseError(file + ": its mask (alpha) differs from diffuse.exr's");
+}
+
+ModelEmbedding load_embedding(const fs::path& dir, const Manifest& m, const ProfileGrid& g) {
+  const auto cols = std::uint32_t(m.q_nodes.size() * g.grid.node_count() * 3);
+  const db::Table t =
+      db::read_table(dir / db::coefficients_file(g.model), std::uint32_t(m.components), cols);
+  Eigen::MatrixXf c(t.rows, t.cols);
+  for (std::uint32_t i = 0; i < t.rows; ++i)
+    for (std::uint32_t j = 0; j < t.cols; ++j) c(i, j) = t.at(i, j);
+  return ModelEmbedding(g.model, g.grid, m.q_nodes, std::move(c));
+}
+
+ConversionTable load_conversion(const fs::path& dir, const ProfileGrid& a, ModelId to) {
+  const std::size_t cols = db::conversion_columns(to), dims = cols - 5;
+  const db::Table t = db::read_table(dir / db::conversion_file(a.model, to),
+                                     std::uint32_t(a.grid.node_count()), std::uint32_t(cols));
+  ConversionTable table{a.model, to, {}};
+  for (std::size_t n = 0; n < t.rows; ++n) {
+    Conversion c;
+    for (std::size_t i = 0; i < dims; ++i) c.params.push_back(t.at(n, i));
+    c.scale = Rgb(t.at(n, dims), t.at(n, dims + 1), t.at(n, dims + 2));
+    c.relative_error = t.at(n, cols - 2);
+    c.image_distance = t.at(n, cols - 1);
+    table.nodes.push_back(std::move(c));
+  }
+  return table;
+}
+
+std::size_t covered_count(const Image& image) {
+  std::size_t n = 0;
+  for (std::size_t i = 3; i < image.rgba.size(); i += 4) n += image.rgba[i] > 0.5f;
+  return n;
+}
+
+}  // namespace
+
+Database Database::open(const fs::path& dir) {
+  Database db;
+  db.dir_ = dir;
+  db.manifest_ = db::read_manifest(dir / db::kManifestFile);
+  const Manifest& m = db.manifest_;
+  check_files(dir, m);
+  check_image(dir / db::kDiffuseFile, m, Image());
+  const Image diffuse = read_image(dir / db::kDiffuseFile);
+  for (const ProfileGrid& g : m.grids)
+    for (std::size_t n = 0; n < g.grid.node_count(); ++n)
+      check_image(dir / db::image_file(g.model, n), m, diffuse);
+  const auto k = std::uint32_t(m.components);
+  db::read_table(dir / db::kSingularValuesFile, 1, k);
+  db::read_table(dir / db::kBasisFile, std::uint32_t(covered_count(diffuse)), k);
+  for (const ProfileGrid& a : m.grids) {
+    db.embeddings_.push_back(load_embedding(dir, m, a));
+    for (const ProfileGrid& b : m.grids)
+      if (b.model != a.model) db.conversions_.push_back(load_conversion(dir, a, b.model));
+  }
+  return db;
+}
+
+const ModelEmbedding* Database::embedding(ModelId id) const {
+  for (const ModelEmbedding& e : embeddings_)
+    if (e.model() == id) return &e;
+  return nullptr;
+}
+
+const ConversionTable* Database::conversion(ModelId from, ModelId to) const {
+  for (const ConversionTable& t : conversions_)
+    if (t.from == from && t.to == to) return &t;
+  return nullptr;
+}
+
+fs::path Database::image_path(ModelId id, std::size_t node) const {
+  return dir_ / db::image_file(id, node);
+}
+
+fs::path Database::diffuse_path() const {
+  return dir_ / db::kDiffuseFile;
+}
+
+}  // namespace brdfnav

@@ -1,0 +1,247 @@
+#include "database_format.h"
+
+#include <brdfnav/core/atomic_file.h>
+
+#include <OpenImageIO/hash.h>
+#include <yaml-cpp/yaml.h>
+
+#include <bit>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+namespace brdfnav::db {
+
+static_assert(std::endian::native == std::endian::little,
+              "the database tables are little-endian float32, written as in memory");
+
+namespace {
+
+constexpr char kTableMagic[8] = {'B', 'N', 'A', 'V', 'T', 'B', 'L', '1'};
+
+std::string model_name(ModelId id) {
+  return std::string(model_info(id).name);
+}
+
+void emit_settings(YAML::Emitter& out, const Profile& p, const EnvMap& env, const Scene& scene) {
+  out << YAML::Key << "brdfnav_database" << YAML::Value << kDatabaseFormatVersion;
+  out << YAML::Key << "generator" << YAML::Value << "brdfnav " BRDFNAV_VERSION;
+  out << YAML::Key << "profile" << YAML::Value << p.name;
+  out << YAML::Key << "resolution" << YAML::Value << p.resolution;
+  out << YAML::Key << "scene" << YAML::Value << scene.description();
+  out << YAML::Key << "environment" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "path" << YAML::Value << env.source();
+  out << YAML::Key << "pixel_sha1" << YAML::Value << env.pixel_hash();
+  out << YAML::Key << "width" << YAML::Value << env.width();
+  out << YAML::Key << "height" << YAML::Value << env.height() << YAML::EndMap;
+  out << YAML::Key << "q_nodes" << YAML::Value << YAML::Flow << diffuse_fraction_nodes(p.q_nodes);
+  out << YAML::Key << "models" << YAML::Value << YAML::BeginMap;
+  for (const ProfileGrid& g : p.grids) {
+    out << YAML::Key << model_name(g.model) << YAML::Value << YAML::BeginMap;
+    for (std::size_t d = 0; d < g.grid.dimensions(); ++d)
+      out << YAML::Key << std::string(g.grid.specs()[d].name) << YAML::Value << YAML::Flow
+          << g.grid.axis(d);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+  const RenderQuality& q = p.quality;
+  out << YAML::Key << "render_quality" << YAML::Value << YAML::Flow << YAML::BeginMap;
+  out << YAML::Key << "far_size" << YAML::Value << q.far_size;
+  out << YAML::Key << "core_size" << YAML::Value << q.core_size;
+  out << YAML::Key << "core_reach" << YAML::Value << q.core_reach;
+  out << YAML::Key << "subtexel_levels" << YAML::Value << q.subtexel_levels;
+  out << YAML::Key << "max_nodes" << YAML::Value << q.max_nodes << YAML::EndMap;
+  out << YAML::Key << "pca" << YAML::Value << YAML::Flow << YAML::BeginMap;
+  out << YAML::Key << "components" << YAML::Value << p.pca.components;
+  out << YAML::Key << "oversample" << YAML::Value << p.pca.oversample;
+  out << YAML::Key << "power_iterations" << YAML::Value << p.pca.power_iterations;
+  out << YAML::Key << "seed" << YAML::Value << p.pca.seed << YAML::EndMap;
+  out << YAML::Key << "fit" << YAML::Value << YAML::Flow << YAML::BeginMap;
+  out << YAML::Key << "n_wo" << YAML::Value << p.fit.n_wo;
+  out << YAML::Key << "n_wi" << YAML::Value << p.fit.n_wi;
+  out << YAML::Key << "starts" << YAML::Value << p.fit.starts;
+  out << YAML::Key << "max_iterations" << YAML::Value << p.fit.max_iterations << YAML::EndMap;
+}
+
+YAML::Emitter& begin(YAML::Emitter& out) {
+  out.SetDoublePrecision(17);  // round-trips every double exactly
+  out << YAML::BeginMap;
+  return out;
+}
+
+}  // namespace
+
+// A required key of a manifest map, or a DatabaseError naming the file and the key.
+YAML::Node require(const YAML::Node& map, const std::string& key, const std::string& file) {
+  const YAML::Node node = map[key];
+  if (!node) throw DatabaseError(file + ": missing key '" + key + "'");
+  return node;
+}
+
+namespace {
+
+std::vector<ProfileGrid> parse_grids(const YAML::Node& models, const std::string& file) {
+  std::vector<ProfileGrid> grids;
+  for (const ModelInfo& info : brdfnav::models()) {
+    const YAML::Node m = models[std::string(info.name)];
+    if (!m) continue;
+    std::vector<std::vector<double>> axes;
+    for (const ParamSpec& spec : info.params) {
+      axes.push_back(require(m, std::string(spec.name), file).as<std::vector<double>>());
+      if (axes.back().size() < 2)
+        throw DatabaseError(file + ": models." + std::string(info.name) + "." +
+                            std::string(spec.name) + " needs at least two nodes");
+    }
+    grids.push_back({info.id, ParamGrid(info.params, std::move(axes))});
+  }
+  if (grids.empty()) throw DatabaseError(file + ": 'models' names no known model");
+  return grids;
+}
+
+}  // namespace
+
+std::string image_file(ModelId id, std::size_t node) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%05zu.exr", node);
+  return "images/" + model_name(id) + "/" + name;
+}
+
+std::string coefficients_file(ModelId id) {
+  return "embedding/" + model_name(id) + ".f32";
+}
+
+std::string conversion_file(ModelId from, ModelId to) {
+  return "conversions/" + model_name(from) + "_to_" + model_name(to) + ".f32";
+}
+
+std::size_t conversion_columns(ModelId to) {
+  return model_info(to).params.size() + 5;
+}
+
+std::vector<std::string> database_files(const std::vector<ProfileGrid>& grids) {
+  std::vector<std::string> files{kDiffuseFile, kBasisFile, kSingularValuesFile};
+  for (const ProfileGrid& a : grids) {
+    for (std::size_t n = 0; n < a.grid.node_count(); ++n) files.push_back(image_file(a.model, n));
+    files.push_back(coefficients_file(a.model));
+    for (const ProfileGrid& b : grids)
+      if (b.model != a.model) files.push_back(conversion_file(a.model, b.model));
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+void write_table(const std::filesystem::path& path, const Table& table) {
+  std::string bytes(kTableMagic, sizeof kTableMagic);
+  bytes.append(reinterpret_cast<const char*>(&table.rows), 4);
+  bytes.append(reinterpret_cast<const char*>(&table.cols), 4);
+  bytes.append(reinterpret_cast<const char*>(table.values.data()), table.values.size() * 4);
+  write_file_atomic(path, bytes);
+}
+
+Table read_table(const std::filesystem::path& path, std::uint32_t rows, std::uint32_t cols) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw DatabaseError(path.string() + ": cannot open");
+  char magic[8];
+  Table t;
+  in.read(magic, 8);
+  in.read(reinterpret_cast<char*>(&t.rows), 4);
+  in.read(reinterpret_cast<char*>(&t.cols), 4);
+  if (!in || std::memcmp(magic, kTableMagic, 8) != 0)
+    throw DatabaseError(path.string() + ": not a brdfnav table (bad header)");
+  if (t.rows != rows || t.cols != cols)
+    throw DatabaseError(path.string() + ": table is " + std::to_string(t.rows) + " x " +
+                        std::to_string(t.cols) + ", the manifest implies " + std::to_string(rows) +
+                        " x " + std::to_string(cols));
+  t.values.resize(std::size_t(rows) * cols);
+  in.read(reinterpret_cast<char*>(t.values.data()), std::streamsize(t.values.size() * 4));
+  if (!in || in.peek() != std::char_traits<char>::eof())
+    throw DatabaseError(path.string() + ": table size does not match its header");
+  return t;
+}
+
+std::string settings_yaml(const Profile& profile, const EnvMap& env, const Scene& scene) {
+  YAML::Emitter out;
+  emit_settings(begin(out), profile, env, scene);
+  out << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+std::string manifest_yaml(const Profile& profile, const EnvMap& env, const Scene& scene,
+                          int components, const std::map<std::string, std::string>& files) {
+  YAML::Emitter out;
+  emit_settings(begin(out), profile, env, scene);
+  out << YAML::Key << "components" << YAML::Value << components;
+  out << YAML::Key << "files" << YAML::Value << YAML::BeginMap;
+  for (const auto& [name, sha] : files) out << YAML::Key << name << YAML::Value << sha;
+  out << YAML::EndMap << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+Manifest read_manifest(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  if (!std::filesystem::exists(path))
+    throw DatabaseError(file + ": no such file (not a brdfnav database, or an unfinished one)");
+  try {
+    const YAML::Node root = YAML::LoadFile(file);
+    Manifest m;
+    m.format_version = require(root, "brdfnav_database", file).as<int>();
+    if (m.format_version != kDatabaseFormatVersion)
+      throw DatabaseError(file + ": database format version " + std::to_string(m.format_version) +
+                          "; this brdfnav reads version " + std::to_string(kDatabaseFormatVersion));
+    m.profile = require(root, "profile", file).as<std::string>();
+    m.resolution = require(root, "resolution", file).as<int>();
+    m.scene = require(root, "scene", file).as<std::string>();
+    const YAML::Node env = require(root, "environment", file);
+    m.env_path = require(env, "path", file).as<std::string>();
+    m.env_hash = require(env, "pixel_sha1", file).as<std::string>();
+    m.components = require(root, "components", file).as<int>();
+    m.q_nodes = require(root, "q_nodes", file).as<std::vector<double>>();
+    m.grids = parse_grids(require(root, "models", file), file);
+    m.files = require(root, "files", file).as<std::map<std::string, std::string>>();
+    return m;
+  } catch (const YAML::Exception& e) {
+    throw DatabaseError(file + ": line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+  }
+}
+
+}  // namespace brdfnav::db
+
+namespace brdfnav {
+
+ShardOrigin read_shard_origin(const std::filesystem::path& shard) {
+  const std::string file = (shard / db::kShardFile).string();
+  if (!std::filesystem::exists(file))
+    throw DatabaseError(file + ": no such file (not a finished brdfnav shard)");
+  try {
+    const YAML::Node root = YAML::LoadFile(file);
+    ShardOrigin o;
+    o.profile = db::require(root, "profile", file).as<std::string>();
+    o.resolution = db::require(root, "resolution", file).as<int>();
+    o.env_path =
+        db::require(db::require(root, "environment", file), "path", file).as<std::string>();
+    o.scene = db::require(root, "scene", file).as<std::string>();
+    const std::string shard_text = db::require(root, "shard", file).as<std::string>();
+    if (std::sscanf(shard_text.c_str(), "%d/%d", &o.shard_index, &o.shard_count) != 2 ||
+        o.shard_count < 1 || o.shard_index < 0 || o.shard_index >= o.shard_count)
+      throw DatabaseError(file + ": 'shard' is '" + shard_text + "', expected i/N with 0 <= i < N");
+    o.files = db::require(root, "files", file).as<std::map<std::string, std::string>>();
+    return o;
+  } catch (const YAML::Exception& e) {
+    throw DatabaseError(file + ": line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+  }
+}
+
+std::string file_sha1(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw DatabaseError(path.string() + ": missing or unreadable");
+  OIIO::SHA1 sha;
+  std::vector<char> buffer(1 << 20);
+  while (in) {
+    in.read(buffer.data(), std::streamsize(buffer.size()));
+    sha.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) throw DatabaseError(path.string() + ": read error");
+  return sha.digest();
+}
+
+}  // namespace brdfnav

@@ -1,0 +1,80 @@
+#include "kernels.h"
+
+#include <Eigen/Eigenvalues>
+
+namespace brdfnav {
+
+KernelShape KernelShape::isotropic(const Vec3& peak, double width) {
+  const Vec3 other = std::abs(peak.x()) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  const Vec3 major = (other - other.dot(peak) * peak).normalized();
+  return {peak, major, width, width};
+}
+
+namespace {
+
+constexpr double kMaxWidth = 1.0;  // radians; broader lobes are all "broad"
+// Reflection squeezes a lobe across the plane of incidence by cos(theta_o); below this cosine
+// the squeeze is not followed further (the few silhouette pixels would cost too much).
+constexpr double kMinCos = 0.25;
+
+// A lobe over half vectors whose slopes (h.x/h.z, h.y/h.z) have covariance diag(sx^2, sy^2) in
+// the local frame, seen from wo. To first order around the mirror direction, reflection maps a
+// half-vector offset (du in the plane of incidence, dv across it) to an incident offset
+// (2 du, 2 cos_o dv), along e_in = (cos_o cos_phi, cos_o sin_phi, sin_o) and
+// e_across = (-sin_phi, cos_phi, 0).
+KernelShape half_vector_shape(const Vec3& wo, double sx, double sy) {
+  const double sin_o = std::hypot(wo.x(), wo.y()), cos_o = std::max(wo.z(), kMinCos);
+  const double cp = sin_o > 1e-9 ? wo.x() / sin_o : 1.0, sp = sin_o > 1e-9 ? wo.y() / sin_o : 0.0;
+  Eigen::Matrix2d rot;  // local (x, y) -> (in plane, across)
+  rot << cp, sp, -sp, cp;
+  const Eigen::Matrix2d jacobian = Eigen::Vector2d(2, 2 * cos_o).asDiagonal();
+  const Eigen::Matrix2d cov = jacobian * rot * Eigen::Vector2d(sx * sx, sy * sy).asDiagonal() *
+                              rot.transpose() * jacobian;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);  // ascending eigenvalues
+  const Eigen::Vector2d axis = eig.eigenvectors().col(1);
+  const Vec3 e_in(wo.z() * cp, wo.z() * sp, sin_o), e_across(-sp, cp, 0);
+  const Vec3 mirror(-wo.x(), -wo.y(), wo.z());
+  return {mirror, (axis[0] * e_in + axis[1] * e_across).normalized(),
+          std::min(kMaxWidth, std::sqrt(eig.eigenvalues()[1])),
+          std::min(kMaxWidth, std::sqrt(std::max(eig.eigenvalues()[0], 0.0)))};
+}
+
+KernelShape shape(const BlinnPhong& l, const Vec3& wo) {
+  // cos^n(theta_h) ~ exp(-n tan^2(theta_h) / 2)
+  const double s = 1 / std::sqrt(l.n + 1);
+  return half_vector_shape(wo, s, s);
+}
+
+KernelShape shape(const Ward& l, const Vec3& wo) {
+  // exp(-(tan(theta_h) cos(phi) / alpha_x)^2 - ...): slope deviations alpha / sqrt(2).
+  return half_vector_shape(wo, l.alpha_x / std::sqrt(2.0), l.alpha_y / std::sqrt(2.0));
+}
+
+KernelShape shape(const CookTorrance& l, const Vec3& wo) {
+  return half_vector_shape(wo, l.m / std::sqrt(2.0), l.m / std::sqrt(2.0));
+}
+
+KernelShape shape(const Lafortune& l, const Vec3& wo) {
+  // A cos^n lobe around c * wo (componentwise).
+  const Vec3 axis(l.cxy * wo.x(), l.cxy * wo.y(), l.cz * wo.z());
+  const double s = std::min(kMaxWidth, 1 / std::sqrt(l.n + 1));
+  return KernelShape::isotropic(axis.squaredNorm() > 1e-24 ? axis.normalized() : Vec3(0, 0, 1), s);
+}
+
+KernelShape shape(const He& l, const Vec3& wo) {
+  // The directional-diffuse lobe is a Poisson mixture of Gaussians in the projected half vector;
+  // its rough limit is Beckmann with slope 2 sigma / tau, its smooth limit the m = 1 term of width
+  // lambda / (sqrt(2) pi tau) in the projected half vector (~ 2 cos_o slope).
+  const double cos_o = std::max(wo.z(), kMinCos);
+  const double smooth = He::kLambda[2] / (std::sqrt(8.0) * kPi * l.tau * cos_o);
+  const double s = std::max(smooth, std::sqrt(2.0) * l.sigma / l.tau);
+  return half_vector_shape(wo, s, s);
+}
+
+}  // namespace
+
+KernelShape lobe_shape(const Lobe& lobe, const Vec3& wo) {
+  return std::visit([&](const auto& l) { return shape(l, wo); }, lobe);
+}
+
+}  // namespace brdfnav

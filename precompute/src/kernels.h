@@ -1,0 +1,63 @@
+// The integrands of the renderer ("kernels": f * cos as a function of the incident world
+// direction at one pixel) and the rough shape of each, which guides the quadrature's refinement.
+#pragma once
+
+#include <brdfnav/core/closure.h>
+
+namespace brdfnav {
+
+// Where a kernel is large: around `peak` (unit), roughly a Gaussian with angular standard
+// deviation `major_width` along the tangent `major` and `minor_width` across it. Only steers the
+// quadrature's refinement: a wrong shape costs time or accuracy, never what is summed.
+struct KernelShape {
+  Vec3 peak;
+  Vec3 major;
+  double major_width;
+  double minor_width;
+
+  static KernelShape isotropic(const Vec3& peak, double width);
+  KernelShape to_world(const Frame& frame) const {
+    return {frame.from_local(peak), frame.from_local(major), major_width, minor_width};
+  }
+};
+
+// rho_s = 1 lobe of a closure times the cosine, in the frame of one pixel.
+template <typename L>
+struct LobeKernel {
+  const L& lobe;
+  Frame frame;
+  Vec3 wo;  // local
+
+  Rgb value(const Vec3& wi_world) const {
+    const Vec3 wi = frame.to_local(wi_world);
+    if (wi.z() <= 0) return Rgb::Zero();
+    return lobe.eval(wi, wo) * wi.z();
+  }
+};
+
+// Lambert with rho_d = 1: cos / pi.
+struct LambertKernel {
+  Vec3 normal;
+  Rgb value(const Vec3& wi) const { return Rgb::Constant(std::max(0.0, normal.dot(wi)) * kInvPi); }
+};
+
+// He's mirror term: weight * a normalised von Mises-Fisher filter of angular width `width`
+// around the mirror direction, i.e. an environment lookup filtered over the pixel's footprint.
+struct MirrorKernel {
+  Vec3 axis;
+  Rgb weight;
+  double kappa, norm;
+
+  MirrorKernel(const Vec3& mirror, const Rgb& w, double width)
+      : axis(mirror), weight(w), kappa(1 / (width * width)) {
+    norm = kappa / (2 * kPi * -std::expm1(-2 * kappa));
+  }
+  Rgb value(const Vec3& wi) const {
+    return weight * (norm * std::exp(-0.5 * kappa * (wi - axis).squaredNorm()));
+  }
+};
+
+// Shape of the rho_s = 1 lobe of each model seen from `wo`, in the local frame.
+KernelShape lobe_shape(const Lobe& lobe, const Vec3& wo);
+
+}  // namespace brdfnav

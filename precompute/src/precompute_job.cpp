@@ -1,0 +1,415 @@
+// precompute_database(): the build of a database in three resumable phases (render, embed, fit)
+// and its atomic completion (manifest, rename).
+#include "database_format.h"
+
+#include <brdfnav/core/atomic_file.h>
+#include <brdfnav/precompute/render.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+namespace brdfnav {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The material of a grid node's specular image: rho_d = 0, rho_s = 1.
+Material node_material(ModelId id, std::vector<double> params, Rgb rho_s = Rgb::Ones()) {
+  Material m = default_material(id);
+  m.params = std::move(params);
+  m.rho_d = Rgb::Zero();
+  m.rho_s = rho_s;
+  return m;
+}
+
+// An image's header: how it was made, and no time stamp (OpenImageIO writes the current time
+// as DateTime unless the attribute is set; an empty value leaves it out), so that rebuilding a
+// database gives the same bytes.
+ImageMetadata image_metadata(const Renderer& renderer, const Material* material) {
+  ImageMetadata m = render_metadata(renderer, material);
+  m.emplace_back("DateTime", "");
+  return m;
+}
+
+class Job {
+ public:
+  Job(const PrecomputeRequest& request, const EnvMap& env, const Scene& scene)
+      : r_(request),
+        p_(request.profile),
+        env_(env),
+        scene_(scene),
+        work_(request.out.string() + ".partial"),
+        threads_(request.threads > 0 ? request.threads
+                                     : int(std::max(1u, std::thread::hardware_concurrency()))) {}
+
+  void run() {
+    prepare();
+    timed("render", [&] { render_images(); });
+    if (r_.shard_count > 1) {
+      finish_shard();
+      return;
+    }
+    timed("embedding", [&] { embed(); });
+    timed("fits", [&] { fit_conversions(); });
+    timed("manifest", [&] { finish(); });
+  }
+
+ private:
+  template <typename F>
+  void timed(const std::string& phase, F&& work) {
+    const auto start = Clock::now();
+    work();
+    char line[128];
+    std::snprintf(line, sizeof line, "%s: %.2f s", phase.c_str(), seconds_since(start));
+    log(line);
+  }
+  void log(const std::string& line) const {
+    if (r_.observer.log) r_.observer.log(line);
+  }
+  void progress(const std::string& phase, std::size_t done, std::size_t total) const {
+    if (r_.observer.progress) r_.observer.progress(phase, done, total);
+  }
+  fs::path at(const std::string& relative) const { return work_ / relative; }
+
+  // The work directory, fresh or (with --resume) checked against the settings it was started with.
+  void prepare() {
+    if (fs::exists(r_.out))
+      throw DatabaseError(r_.out.string() + ": already exists; remove it or choose another --out");
+    const std::string settings = db::settings_yaml(p_, env_, scene_);
+    const fs::path settings_path = at(db::kSettingsFile);
+    if (fs::exists(work_) && r_.resume && fs::exists(settings_path)) {
+      if (read_text(settings_path) != settings)
+        throw DatabaseError(settings_path.string() +
+                            ": the unfinished database was started with other settings (profile, "
+                            "environment, scene or resolution); remove " +
+                            work_.string() + " or run without --resume");
+      log("resuming in " + work_.string());
+    } else {
+      fs::remove_all(work_);
+    }
+    for (const char* dir : {"images", "embedding", "conversions"}) fs::create_directories(at(dir));
+    for (const ProfileGrid& g : p_.grids)
+      fs::create_directories(at("images/" + std::string(model_info(g.model).name)));
+    write_file_atomic(settings_path, settings);
+  }
+
+  // A finished image is reused when it reads back at the profile's size; anything else (a file
+  // damaged outside brdfnav) is rendered again.
+  bool reusable_image(const fs::path& path) const {
+    if (!fs::exists(path)) return false;
+    try {
+      const Image image = read_image(path);
+      if (image.width == p_.resolution && image.height == p_.resolution) return true;
+    } catch (const ImageError&) {
+    }
+    log(path.string() + ": unreadable or of the wrong size; rendering it again");
+    return false;
+  }
+
+  void render_images() {
+    RenderOptions options;
+    options.threads = r_.threads;
+    options.quality = p_.quality;
+    Renderer renderer(env_, scene_, p_.resolution, options);
+    const std::size_t total = p_.image_count();
+    std::size_t done = 0, reused = 0;
+    progress("render", 0, total);
+    std::size_t unit = 0;
+    if (!mine(unit++) || reusable_image(at(db::kDiffuseFile))) {
+      ++reused;
+    } else {
+      write_exr(renderer.diffuse(), at(db::kDiffuseFile), image_metadata(renderer, nullptr));
+    }
+    progress("render", ++done, total);
+    for (const ProfileGrid& g : p_.grids) {
+      for (std::size_t node = 0; node < g.grid.node_count(); ++node) {
+        const fs::path path = at(db::image_file(g.model, node));
+        if (!mine(unit++) || reusable_image(path)) {
+          ++reused;
+        } else {
+          const Material m = node_material(g.model, g.grid.node_values(node));
+          write_exr(renderer.specular(make_lobe(m.model, m.params)), path,
+                    image_metadata(renderer, &m));
+        }
+        progress("render", ++done, total);
+      }
+    }
+    log("render: " + std::to_string(total) + " images, " + std::to_string(reused) +
+        (r_.shard_count > 1 ? " reused or left to other shards" : " reused"));
+  }
+
+  bool mine(std::size_t unit) const {
+    return unit % std::size_t(r_.shard_count) == std::size_t(r_.shard_index);
+  }
+
+  // A shard: its images and shard.yaml (the settings, i/N and the images' checksums).
+  void finish_shard() {
+    std::string text = db::settings_yaml(p_, env_, scene_);
+    text += "shard: " + std::to_string(r_.shard_index) + "/" + std::to_string(r_.shard_count) +
+            "\nfiles:\n";
+    for (const std::string& f : db::database_files(p_.grids))
+      if (f.ends_with(".exr") && fs::exists(at(f)))
+        text += "  " + f + ": " + file_sha1(at(f)) + "\n";
+    write_file_atomic(at(db::kShardFile), text);
+    fs::remove(at(db::kSettingsFile));
+    std::error_code ec;
+    fs::rename(work_, r_.out, ec);
+    if (ec)
+      throw DatabaseError(r_.out.string() + ": cannot move the shard into place: " + ec.message());
+    log("shard written to " + r_.out.string());
+  }
+
+  bool embedding_done() const {
+    if (!fs::exists(at(db::kSingularValuesFile)) || !fs::exists(at(db::kBasisFile))) return false;
+    for (const ProfileGrid& g : p_.grids)
+      if (!fs::exists(at(db::coefficients_file(g.model)))) return false;
+    return true;
+  }
+
+  void embed() {
+    if (embedding_done()) {
+      log("embedding: reused");
+      return;
+    }
+    const std::size_t total = p_.image_count();
+    std::size_t done = 0;
+    progress("load images", 0, total);
+    const Image diffuse = read_image(at(db::kDiffuseFile));
+    progress("load images", ++done, total);
+    std::vector<ModelImages> images;
+    for (const ProfileGrid& g : p_.grids) {
+      images.push_back({g.model, g.grid, {}});
+      for (std::size_t node = 0; node < g.grid.node_count(); ++node) {
+        images.back().specular.push_back(read_image(at(db::image_file(g.model, node))));
+        progress("load images", ++done, total);
+      }
+    }
+    progress("embedding", 0, 1);
+    const std::vector<double> q = diffuse_fraction_nodes(p_.q_nodes);
+    const Embedding e = build_embedding(diffuse, images, q, p_.pca);
+    write_embedding(e);
+    progress("embedding", 1, 1);
+  }
+
+  void write_embedding(const Embedding& e) const {
+    const Eigen::MatrixXf& v = e.basis.vectors;
+    db::Table basis{std::uint32_t(v.rows()), std::uint32_t(v.cols()), {}};
+    for (Eigen::Index i = 0; i < v.rows(); ++i)
+      for (Eigen::Index j = 0; j < v.cols(); ++j) basis.values.push_back(v(i, j));
+    db::write_table(at(db::kBasisFile), basis);
+    db::Table singular{1, std::uint32_t(v.cols()), {}};
+    for (double s : e.basis.singular_values) singular.values.push_back(float(s));
+    db::write_table(at(db::kSingularValuesFile), singular);
+    for (const ModelEmbedding& m : e.models) {
+      const Eigen::MatrixXf& c = m.coefficients();
+      db::Table t{std::uint32_t(c.rows()), std::uint32_t(c.cols()), {}};
+      for (Eigen::Index i = 0; i < c.rows(); ++i)
+        for (Eigen::Index j = 0; j < c.cols(); ++j) t.values.push_back(c(i, j));
+      db::write_table(at(db::coefficients_file(m.model())), t);
+    }
+  }
+
+  int components() const {
+    std::ifstream in(at(db::kSingularValuesFile), std::ios::binary);
+    std::uint32_t dims[2] = {0, 0};
+    in.seekg(8);
+    in.read(reinterpret_cast<char*>(dims), sizeof dims);
+    if (!in) throw DatabaseError(at(db::kSingularValuesFile).string() + ": unreadable");
+    return int(dims[1]);
+  }
+
+  ModelEmbedding load_embedding(const ProfileGrid& g) const {
+    const std::vector<double> q = diffuse_fraction_nodes(p_.q_nodes);
+    const auto k = std::uint32_t(components());
+    const auto cols = std::uint32_t(q.size() * g.grid.node_count() * 3);
+    const db::Table t = db::read_table(at(db::coefficients_file(g.model)), k, cols);
+    Eigen::MatrixXf c(k, cols);
+    for (std::uint32_t i = 0; i < k; ++i)
+      for (std::uint32_t j = 0; j < cols; ++j) c(i, j) = t.at(i, j);
+    return ModelEmbedding(g.model, g.grid, q, std::move(c));
+  }
+
+  void fit_conversions() {
+    std::vector<ModelEmbedding> embeddings;
+    for (const ProfileGrid& g : p_.grids) embeddings.push_back(load_embedding(g));
+    std::size_t total = 0, done = 0, fitted = 0;
+    for (const ProfileGrid& a : p_.grids) total += a.grid.node_count() * (p_.grids.size() - 1);
+    const auto start = Clock::now();
+    progress("fits", 0, total);
+    for (std::size_t ai = 0; ai < p_.grids.size(); ++ai) {
+      for (std::size_t bi = 0; bi < p_.grids.size(); ++bi) {
+        if (ai == bi) continue;
+        const ProfileGrid& a = p_.grids[ai];
+        const fs::path path = at(db::conversion_file(a.model, p_.grids[bi].model));
+        if (!fs::exists(path)) {
+          fit_table(embeddings[ai], embeddings[bi], path, done, total);
+          fitted += a.grid.node_count();
+        } else {
+          done += a.grid.node_count();
+        }
+        progress("fits", done, total);
+      }
+    }
+    char line[160];
+    std::snprintf(line, sizeof line, "fits: %zu of %zu fitted, %.1f ms per fit on %d threads",
+                  fitted, total, fitted ? 1e3 * seconds_since(start) * threads_ / fitted : 0.0,
+                  threads_);
+    log(line);
+  }
+
+  // One conversion table: every node of `a` fitted by `b`'s model, nodes spread over threads.
+  void fit_table(const ModelEmbedding& a, const ModelEmbedding& b, const fs::path& path,
+                 std::size_t& done, std::size_t total) const {
+    const std::size_t nodes = a.grid().node_count(), cols = db::conversion_columns(b.model());
+    db::Table t{std::uint32_t(nodes), std::uint32_t(cols), std::vector<float>(nodes * cols)};
+    std::atomic<std::size_t> next{0};
+    std::mutex mutex;
+    std::exception_ptr failure;  // the first error of any thread, rethrown here
+    const auto fit_node = [&](std::size_t n) {
+      const Material source = node_material(a.model(), a.grid().node_values(n));
+      const LobeFit fit = fit_lobe(make_lobe(source.model, source.params), b.model(), p_.fit);
+      const Material fitted = node_material(b.model(), fit.params, fit.scale);
+      const double d = Embedding::distance(a.embed(source), b.embed(fitted));
+      float* row = &t.values[n * cols];
+      for (std::size_t i = 0; i < fit.params.size(); ++i) row[i] = float(fit.params[i]);
+      for (int c = 0; c < 3; ++c) row[fit.params.size() + c] = float(fit.scale[c]);
+      row[cols - 2] = float(fit.relative_error);
+      row[cols - 1] = float(d);
+      const std::lock_guard lock(mutex);
+      progress("fits", ++done, total);
+    };
+    const auto worker = [&] {
+      for (std::size_t n = next++; n < nodes; n = next++) {
+        try {
+          fit_node(n);
+        } catch (...) {
+          const std::lock_guard lock(mutex);
+          if (!failure) failure = std::current_exception();
+          next = nodes;
+        }
+      }
+    };
+    std::vector<std::jthread> pool;
+    for (int i = 1; i < threads_; ++i) pool.emplace_back(worker);
+    worker();
+    pool.clear();
+    if (failure) std::rethrow_exception(failure);
+    db::write_table(path, t);
+  }
+
+  // Checksums every file, writes the manifest, drops what is not part of the database (the
+  // settings, temporaries of an interrupted run) and renames the directory into place.
+  void finish() {
+    const std::vector<std::string> files = db::database_files(p_.grids);
+    std::map<std::string, std::string> sums;
+    std::size_t done = 0;
+    for (const std::string& f : files) {
+      sums[f] = file_sha1(at(f));
+      progress("checksums", ++done, files.size());
+    }
+    const fs::path manifest = at(db::kManifestFile);
+    write_file_atomic(manifest, db::manifest_yaml(p_, env_, scene_, components(), sums));
+    std::vector<fs::path> stray;
+    for (const fs::directory_entry& e : fs::recursive_directory_iterator(work_)) {
+      const std::string rel = fs::relative(e.path(), work_).generic_string();
+      if (e.is_regular_file() && rel != db::kManifestFile && !sums.contains(rel))
+        stray.push_back(e.path());
+    }
+    for (const fs::path& f : stray) fs::remove(f);
+    std::error_code ec;
+    fs::rename(work_, r_.out, ec);
+    if (ec)
+      throw DatabaseError(r_.out.string() +
+                          ": cannot move the finished database into place: " + ec.message());
+    log("database written to " + r_.out.string());
+  }
+
+  const PrecomputeRequest& r_;
+  const Profile& p_;
+  const EnvMap& env_;
+  const Scene& scene_;
+  fs::path work_;
+  int threads_;
+};
+
+}  // namespace
+
+void precompute_database(const PrecomputeRequest& request, const EnvMap& env, const Scene& scene) {
+  if (request.shard_count < 1 || request.shard_index < 0 ||
+      request.shard_index >= request.shard_count)
+    throw DatabaseError("shard " + std::to_string(request.shard_index) + "/" +
+                        std::to_string(request.shard_count) + ": expected i/N with 0 <= i < N");
+  Job(request, env, scene).run();
+}
+
+namespace {
+
+// Copies a shard's images into the work directory after checking the shard belongs to the build.
+void take_shard(const fs::path& shard, const std::string& settings, const fs::path& work,
+                std::vector<bool>& seen) {
+  const ShardOrigin o = read_shard_origin(shard);
+  const std::string file = (shard / db::kShardFile).string();
+  if (read_text(file).rfind(settings, 0) != 0)
+    throw DatabaseError(file + ": the shard was made with other settings than " +
+                        "the first shard (profile, environment, scene or resolution)");
+  const std::string name = std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count);
+  if (seen.empty()) seen.assign(std::size_t(o.shard_count), false);
+  if (std::size_t(o.shard_count) != seen.size())
+    throw DatabaseError(file + ": shard " + name + ", but the other shards are of " +
+                        std::to_string(seen.size()));
+  if (seen[std::size_t(o.shard_index)])
+    throw DatabaseError(file + ": shard " + name + " given twice");
+  seen[std::size_t(o.shard_index)] = true;
+  for (const auto& [relative, sha] : o.files) {
+    if (file_sha1(shard / relative) != sha)
+      throw DatabaseError((shard / relative).string() + ": checksum mismatch");
+    fs::create_directories((work / relative).parent_path());
+    fs::copy_file(shard / relative, work / relative, fs::copy_options::overwrite_existing);
+  }
+}
+
+}  // namespace
+
+void merge_shards(const std::vector<fs::path>& shards, const PrecomputeRequest& request,
+                  const EnvMap& env, const Scene& scene) {
+  if (fs::exists(request.out))
+    throw DatabaseError(request.out.string() +
+                        ": already exists; remove it or choose another --out");
+  const std::string settings = db::settings_yaml(request.profile, env, scene);
+  const fs::path work = request.out.string() + ".partial";
+  fs::remove_all(work);
+  fs::create_directories(work);
+  std::vector<bool> seen;
+  for (const fs::path& shard : shards) take_shard(shard, settings, work, seen);
+  for (std::size_t i = 0; i < seen.size(); ++i)
+    if (!seen[i])
+      throw DatabaseError("shard " + std::to_string(i) + "/" + std::to_string(seen.size()) +
+                          " is missing from the merge");
+  write_file_atomic(work / db::kSettingsFile, settings);
+  PrecomputeRequest whole = request;
+  whole.resume = true;  // every image is there: the build goes on with the embedding
+  whole.shard_index = 0, whole.shard_count = 1;
+  Job(whole, env, scene).run();
+}
+
+}  // namespace brdfnav

@@ -1,0 +1,228 @@
+#include <brdfnav/precompute/render.h>
+
+#include "geometry.h"
+#include "quadrature.h"
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace brdfnav {
+
+RenderQuality RenderQuality::finer(double factor) const {
+  RenderQuality q = *this;
+  q.core_size /= factor;
+  q.core_limit /= factor;
+  q.far_size /= factor;
+  q.subtexel_levels += static_cast<int>(std::ceil(std::log2(factor)));
+  q.max_nodes *= static_cast<int>(std::ceil(factor * factor));
+  return q;
+}
+
+namespace {
+
+// The cosine lobe's curvature (laplacian(cos) = -2 cos) is that of a Gaussian of width 1; a
+// little finer keeps the diffuse image, computed once, well below the specular errors.
+constexpr double kLambertWidth = 0.7;
+
+// World up: the tangent field of anisotropic lobes follows the meridians toward it.
+const Vec3 kUp(0, 1, 0);
+
+// Per-pixel shading frame: x along the meridian through the pixel's normal (toward +y), so the
+// tangent is continuous everywhere except at the poles, where from_normal_tangent falls back.
+Frame pixel_frame(const SurfacePoint& p) {
+  return Frame::from_normal_tangent(p.normal, kUp);
+}
+
+// Angular width of the filter of He's mirror lookup at each pixel: half the largest angle
+// between the pixel's mirror direction and its covered neighbours', at least half a texel.
+std::vector<double> mirror_widths(const SurfaceBuffer& s, double texel_angle) {
+  const int n = s.resolution;
+  std::vector<double> widths(s.points.size(), 0.0);
+  auto mirror = [&](int x, int y) { return reflect(kViewDirection, s.at(x, y).normal); };
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) {
+      if (!s.at(x, y).covered) continue;
+      const Vec3 m = mirror(x, y);
+      double spread = 0;
+      const int dx[] = {1, -1, 0, 0}, dy[] = {0, 0, 1, -1};
+      for (int k = 0; k < 4; ++k) {
+        const int nx = x + dx[k], ny = y + dy[k];
+        if (nx < 0 || ny < 0 || nx >= n || ny >= n || !s.at(nx, ny).covered) continue;
+        spread = std::max(spread, angle_between(m, mirror(nx, ny)));
+      }
+      widths[static_cast<std::size_t>(y) * n + x] = std::max(spread, texel_angle) / 2;
+    }
+  }
+  return widths;
+}
+
+// Runs row(y, stack) for every image row on `threads` workers while the calling thread reports
+// progress. Rows are independent, so the result does not depend on the scheduling.
+template <typename Row>
+void parallel_rows(int rows, int threads, const ProgressSink& progress, Row row) {
+  std::atomic<int> next{0}, done{0};
+  std::mutex mutex;
+  std::condition_variable finished;
+  auto worker = [&] {
+    QuadratureStack stack;
+    for (int y; (y = next++) < rows;) {
+      row(y, stack);
+      if (++done == rows) {
+        std::lock_guard lock(mutex);
+        finished.notify_all();
+      }
+    }
+  };
+  std::vector<std::jthread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  std::unique_lock lock(mutex);
+  while (!finished.wait_for(lock, std::chrono::milliseconds(200), [&] { return done == rows; }))
+    if (progress) progress(done, rows);
+  lock.unlock();
+  pool.clear();
+  if (progress) progress(rows, rows);
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+  const EnvMap& env;
+  const Scene& scene;
+  int resolution;
+  RenderOptions options;
+  EnvTree tree;
+  SurfaceBuffer surface;
+  std::vector<double> mirror_width;
+  std::optional<Image> diffuse;
+
+  Impl(const EnvMap& e, const Scene& s, int res, RenderOptions o)
+      : env(e), scene(s), resolution(res), options(std::move(o)), tree(e) {
+    if (res < 1) throw std::invalid_argument("resolution must be at least 1");
+    surface = scene.trace_camera(res);
+    mirror_width = mirror_widths(surface, kPi / env.height());
+  }
+
+  int threads() const {
+    if (options.threads > 0) return options.threads;
+    return std::max(1u, std::thread::hardware_concurrency());
+  }
+
+  // Image whose covered pixels hold pixel(point, index, stack).
+  template <typename Pixel>
+  Image render_pass(Pixel pixel) {
+    Image image(resolution, resolution);
+    parallel_rows(resolution, threads(), options.progress, [&](int y, QuadratureStack& stack) {
+      for (int x = 0; x < resolution; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * resolution + x;
+        const SurfacePoint& p = surface.points[i];
+        if (!p.covered) continue;
+        const Rgb v = pixel(p, i, stack);
+        float* out = image.pixel(x, y);
+        for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(v[c]);
+        out[3] = 1.f;
+      }
+    });
+    return image;
+  }
+
+  template <typename Kernel>
+  Rgb integrate(const Kernel& kernel, const KernelShape& shape, const Vec3& horizon,
+                const SurfacePoint& p, QuadratureStack& stack) const {
+    if (scene.convex())
+      return Quadrature(tree, kernel, shape, horizon, options.quality).integrate(stack);
+    auto visible = [&](const Vec3& w) { return !scene.occluded(p, w); };
+    return Quadrature(tree, kernel, shape, horizon, options.quality, visible).integrate(stack);
+  }
+
+  Rgb diffuse_pixel(const SurfacePoint& p, QuadratureStack& stack) const {
+    const KernelShape shape = KernelShape::isotropic(p.normal, kLambertWidth);
+    return integrate(LambertKernel{p.normal}, shape, p.normal, p, stack);
+  }
+
+  template <typename L>
+  Rgb specular_pixel(const L& lobe, const Lobe& any, const SurfacePoint& p, std::size_t i,
+                     QuadratureStack& stack) const {
+    const Frame frame = pixel_frame(p);
+    const Vec3 wo = frame.to_local(kViewDirection);
+    if (wo.z() <= 0) return Rgb::Zero();
+    const KernelShape shape = lobe_shape(any, wo).to_world(frame);
+    Rgb sum = integrate(LobeKernel<L>{lobe, frame, wo}, shape, p.normal, p, stack);
+    if constexpr (requires { lobe.mirror_weight(wo); }) {
+      const Rgb weight = lobe.mirror_weight(wo);
+      if ((weight > 0).any()) {
+        const Vec3 mirror = reflect(kViewDirection, p.normal);
+        const double width = mirror_width[i];
+        const MirrorKernel kernel(mirror, weight, width);
+        sum += integrate(kernel, KernelShape::isotropic(mirror, width), mirror, p, stack);
+      }
+    }
+    return sum;
+  }
+};
+
+Renderer::Renderer(const EnvMap& env, const Scene& scene, int resolution, RenderOptions options)
+    : impl_(std::make_unique<Impl>(env, scene, resolution, std::move(options))) {}
+Renderer::~Renderer() = default;
+
+int Renderer::resolution() const {
+  return impl_->resolution;
+}
+const EnvMap& Renderer::env() const {
+  return impl_->env;
+}
+const Scene& Renderer::scene() const {
+  return impl_->scene;
+}
+const RenderOptions& Renderer::options() const {
+  return impl_->options;
+}
+void Renderer::set_progress(ProgressSink progress) {
+  impl_->options.progress = std::move(progress);
+}
+
+const Image& Renderer::diffuse() {
+  if (!impl_->diffuse) {
+    impl_->diffuse = impl_->render_pass([&](const SurfacePoint& p, std::size_t, QuadratureStack& h) {
+      return impl_->diffuse_pixel(p, h);
+    });
+  }
+  return *impl_->diffuse;
+}
+
+Image Renderer::specular(const Lobe& lobe) {
+  return std::visit(
+      [&](const auto& l) {
+        return impl_->render_pass([&](const SurfacePoint& p, std::size_t i, QuadratureStack& h) {
+          return impl_->specular_pixel(l, lobe, p, i, h);
+        });
+      },
+      lobe);
+}
+
+Image Renderer::render(const Material& material) {
+  validate(material);
+  const Lobe lobe = make_lobe(material.model, material.params);
+  return compose(diffuse(), specular(lobe), material.rho_d, material.rho_s);
+}
+
+ImageMetadata render_metadata(const Renderer& renderer, const Material* material) {
+  const RenderQuality& q = renderer.options().quality;
+  char quality[160];
+  std::snprintf(quality, sizeof quality,
+                "core_size=%g core_limit=%g core_reach=%g far_size=%g subtexel_levels=%d",
+                q.core_size, q.core_limit, q.core_reach, q.far_size, q.subtexel_levels);
+  ImageMetadata m{{"brdfnav:env", renderer.env().source()},
+                  {"brdfnav:env_sha1", renderer.env().pixel_hash()},
+                  {"brdfnav:scene", renderer.scene().description()},
+                  {"brdfnav:resolution", std::to_string(renderer.resolution())},
+                  {"brdfnav:quality", quality}};
+  if (material) m.emplace_back("brdfnav:material", format_material_spec(*material));
+  return m;
+}
+
+}  // namespace brdfnav

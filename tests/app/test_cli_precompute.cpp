@@ -1,0 +1,58 @@
+#include "app/cli_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+namespace brdfnav::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The test profile end to end through the CLI, in one case because it is by far the slowest
+// part (He's images): build, inspect, refuse to overwrite, then reject a corrupted file.
+TEST(CliPrecompute, BuildsVerifiesAndRejectsACorruptDatabase) {
+  const fs::path root =
+      fs::temp_directory_path() / ("brdfnav_cli_precompute_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root);
+  const fs::path db = root / "db";
+
+  // The test profile; --res keeps the test at the smallest size the CLI takes should the profile
+  // grow (the renderer is the bottleneck).
+  auto r = run_cli("precompute --profile test --res 8 --out " + db.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* phase : {"render: ", "embedding: ", "fits: ", "manifest: "})
+    EXPECT_NE(r.err.find(std::string("brdfnav: ") + phase), std::string::npos) << phase;
+  EXPECT_FALSE(fs::exists(db.string() + ".partial"));
+
+  r = run_cli("db-info " + db.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("profile: test"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("resolution: 8"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("model he: 8 nodes"), std::string::npos) << r.out;
+
+  r = run_cli("precompute --profile test --res 8 --out " + db.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("already exists"), std::string::npos) << r.err;
+
+  const fs::path table = db / "conversions" / "he_to_ward.f32";
+  std::string bytes = read_text(table);
+  bytes[bytes.size() - 1] ^= 0x40;
+  std::ofstream(table, std::ios::binary) << bytes;
+  r = run_cli("db-info " + db.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("conversions/he_to_ward.f32: checksum mismatch"), std::string::npos)
+      << r.err;
+
+  fs::remove_all(root);
+}
+
+TEST(CliPrecompute, RejectsAnUnknownProfile) {
+  const auto r = run_cli("precompute --profile huge --out /tmp/never_written");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("--profile"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace brdfnav::test

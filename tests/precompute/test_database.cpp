@@ -1,0 +1,282 @@
+#include <brdfnav/precompute/database.h>
+#include <brdfnav/precompute/render.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace brdfnav {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A three-model profile (He is by far the slowest model to render) at 8 x 8: the pipeline is the
+// same as for the named profiles, at a size that keeps each test process (ctest runs every case
+// in its own process, each building the fixture) at a few seconds.
+Profile tiny_profile() {
+  Profile p = make_profile("test");
+  p.name = "unit";
+  p.resolution = 8;
+  p.pca.components = 400;  // more than the data's rank: the embedding is then lossless
+  p.grids = {
+      {ModelId::blinn_phong, ParamGrid(model_info(ModelId::blinn_phong).params, {{5, 2000}})},
+      {ModelId::ward, ParamGrid(model_info(ModelId::ward).params, {{0.02, 0.3}, {0.02, 0.3}})},
+      {ModelId::lafortune,
+       ParamGrid(model_info(ModelId::lafortune).params, {{0.54, 0.57735026918962573}, {8, 800}})},
+  };
+  return p;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("brdfnav_test_database_" + std::to_string(::getpid())) / name;
+  fs::remove_all(dir);
+  fs::remove_all(dir.string() + ".partial");
+  fs::create_directories(dir.parent_path());
+  return dir;
+}
+
+struct Interrupted {};
+
+struct Fixture {
+  EnvMap env = EnvMap::load(kDefaultEnvPath, {}, [](const std::string&) {});
+  Scene scene = Scene::sphere();
+  fs::path db = scratch("reference");
+
+  Fixture() { precompute_database({tiny_profile(), db, false, 0, {}}, env, scene); }
+  ~Fixture() { fs::remove_all(db.parent_path()); }
+};
+
+Fixture& fixture() {
+  static Fixture f;
+  return f;
+}
+
+std::string read_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write_bytes(const fs::path& p, const std::string& bytes) {
+  std::ofstream(p, std::ios::binary) << bytes;
+}
+
+// Every file below `dir`, relative path -> contents.
+std::map<std::string, std::string> tree(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) files[fs::relative(e.path(), dir).generic_string()] = read_bytes(e);
+  return files;
+}
+
+// A copy of the reference database to damage.
+fs::path copy_of_reference(const std::string& name) {
+  const fs::path dir = scratch(name);
+  fs::copy(fixture().db, dir, fs::copy_options::recursive);
+  return dir;
+}
+
+// Runs `open` and returns its error message (empty when it succeeds).
+std::string open_error(const fs::path& dir) {
+  try {
+    Database::open(dir);
+  } catch (const DatabaseError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void replace_in_file(const fs::path& p, const std::string& from, const std::string& to) {
+  std::string text = read_bytes(p);
+  const std::size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  write_bytes(p, text.replace(at, from.size(), to));
+}
+
+TEST(Database, OpensWithTheManifestAndTablesOfItsProfile) {
+  const Database db = Database::open(fixture().db);
+  const Manifest& m = db.manifest();
+  EXPECT_EQ(m.format_version, kDatabaseFormatVersion);
+  EXPECT_EQ(m.profile, "unit");
+  EXPECT_EQ(m.resolution, 8);
+  EXPECT_EQ(m.scene, "sphere");
+  EXPECT_EQ(m.env_hash, fixture().env.pixel_hash());
+  EXPECT_EQ(m.q_nodes, diffuse_fraction_nodes(5));
+  ASSERT_EQ(m.grids.size(), 3u);
+  EXPECT_EQ(m.grids[1].grid.axis(0), (std::vector<double>{0.02, 0.3}));
+  EXPECT_EQ(db.embedding(ModelId::he), nullptr);
+  ASSERT_NE(db.embedding(ModelId::ward), nullptr);
+  const ConversionTable* t = db.conversion(ModelId::ward, ModelId::blinn_phong);
+  ASSERT_NE(t, nullptr);
+  EXPECT_EQ(t->nodes.size(), 4u);
+  EXPECT_EQ(db.conversion(ModelId::ward, ModelId::ward), nullptr);
+}
+
+// The stored embedding reproduces the metric between the stored images (lossless basis, nodes on
+// the grid), so the tables are read back in the layout they were written in.
+TEST(Database, EmbeddingReproducesTheMetricOfItsImages) {
+  const Database db = Database::open(fixture().db);
+  const Image diffuse = read_image(db.diffuse_path());
+  const ModelEmbedding& ward = *db.embedding(ModelId::ward);
+  const ModelEmbedding& phong = *db.embedding(ModelId::blinn_phong);
+  Material a = default_material(ModelId::ward), b = default_material(ModelId::blinn_phong);
+  a.params = ward.grid().node_values(2), b.params = phong.grid().node_values(1);
+  a.rho_d = b.rho_d = Rgb::Zero(), a.rho_s = b.rho_s = Rgb::Ones();
+  const double exact = image_distance(read_image(db.image_path(ModelId::ward, 2)),
+                                      read_image(db.image_path(ModelId::blinn_phong, 1)));
+  const double embedded = Embedding::distance(ward.embed(a), phong.embed(b));
+  EXPECT_NEAR(embedded, exact, 1e-4 * exact);
+}
+
+// Each conversion stores a fit inside the target's parameter ranges and the embedded distance
+// between the source node and that fit.
+TEST(Database, ConversionsAreFitsWithTheirImageDistance) {
+  const Database db = Database::open(fixture().db);
+  const ModelEmbedding& from = *db.embedding(ModelId::lafortune);
+  const ModelEmbedding& to = *db.embedding(ModelId::blinn_phong);
+  const ConversionTable& t = *db.conversion(ModelId::lafortune, ModelId::blinn_phong);
+  for (std::size_t n = 0; n < t.nodes.size(); ++n) {
+    const Conversion& c = t.nodes[n];
+    ASSERT_EQ(c.params.size(), 1u);
+    EXPECT_GE(c.params[0], 2.0);
+    EXPECT_LE(c.params[0], 80000.0);
+    EXPECT_GE(c.relative_error, 0.0);
+    Material a = default_material(ModelId::lafortune), b = default_material(ModelId::blinn_phong);
+    a.params = from.grid().node_values(n), b.params = c.params;
+    a.rho_d = b.rho_d = Rgb::Zero(), a.rho_s = Rgb::Ones(), b.rho_s = c.scale;
+    // The stored params are float32: the distance is recomputed from rounded parameters.
+    EXPECT_NEAR(Embedding::distance(from.embed(a), to.embed(b)), c.image_distance, 1e-3);
+  }
+  // cz = 1/sqrt(3) is exactly a Phong lobe: Blinn-Phong fits it far better than the tilted lobe.
+  EXPECT_LT(t.nodes[1].relative_error, t.nodes[0].relative_error);
+}
+
+TEST(Database, RejectsAFlippedByteNamingTheFile) {
+  const fs::path dir = copy_of_reference("corrupt");
+  std::string bytes = read_bytes(dir / "embedding/ward.f32");
+  bytes[bytes.size() / 2] ^= 0x01;
+  write_bytes(dir / "embedding/ward.f32", bytes);
+  const std::string error = open_error(dir);
+  EXPECT_NE(error.find("embedding/ward.f32"), std::string::npos) << error;
+  EXPECT_NE(error.find("checksum"), std::string::npos) << error;
+}
+
+TEST(Database, RejectsAnotherFormatVersion) {
+  const fs::path dir = copy_of_reference("version");
+  replace_in_file(dir / "manifest.yaml", "brdfnav_database: 1", "brdfnav_database: 2");
+  const std::string error = open_error(dir);
+  EXPECT_NE(error.find("manifest.yaml"), std::string::npos) << error;
+  EXPECT_NE(error.find("format version 2"), std::string::npos) << error;
+}
+
+TEST(Database, RejectsAMissingFile) {
+  const fs::path dir = copy_of_reference("missing");
+  fs::remove(dir / "images/ward/00001.exr");
+  const std::string error = open_error(dir);
+  EXPECT_NE(error.find("images/ward/00001.exr: missing"), std::string::npos) << error;
+  EXPECT_NE(open_error(scratch("nothing")).find("manifest.yaml: no such file"), std::string::npos);
+}
+
+// An image rendered under another environment does not belong, even with its checksum updated
+// in the manifest (someone "repairing" a database by hand).
+TEST(Database, RejectsAnImageFromAnotherEnvironment) {
+  const fs::path dir = copy_of_reference("swapped");
+  const EnvMap grey(8, 4, std::vector<float>(8 * 4 * 3, 0.5f), "synthetic grey");
+  Renderer renderer(grey, fixture().scene, 8);
+  const Material m = default_material(ModelId::ward);
+  const fs::path swapped = dir / "images/ward/00003.exr";
+  const std::string old_sha = file_sha1(swapped);
+  write_exr(renderer.specular(make_lobe(m.model, m.params)), swapped,
+            render_metadata(renderer, &m));
+  std::string error = open_error(dir);
+  EXPECT_NE(error.find("images/ward/00003.exr: checksum mismatch"), std::string::npos) << error;
+  replace_in_file(dir / "manifest.yaml", old_sha, file_sha1(swapped));
+  error = open_error(dir);
+  EXPECT_NE(error.find("images/ward/00003.exr: rendered under another environment"),
+            std::string::npos)
+      << error;
+}
+
+TEST(Database, RefusesToOverwriteAnExistingDirectory) {
+  const Fixture& f = fixture();
+  EXPECT_THROW(precompute_database({tiny_profile(), f.db, false, 0, {}}, f.env, f.scene),
+               DatabaseError);
+}
+
+// An interrupted build whose work directory holds some finished units (copied from the
+// reference, as a build that got further would have left them) resumes to a database
+// byte-identical to the uninterrupted one; a resume with other settings is refused.
+TEST(Database, ResumeReusesFinishedWorkAndIsByteIdentical) {
+  const Fixture& f = fixture();
+  const fs::path dir = scratch("resumed"), work = dir.string() + ".partial";
+  PrecomputeRequest request{tiny_profile(), dir, false, 0, {}};
+  request.observer.progress = [](const std::string& phase, std::size_t done, std::size_t) {
+    if (phase == "render" && done == 1) throw Interrupted{};
+  };
+  EXPECT_THROW(precompute_database(request, f.env, f.scene), Interrupted);
+  ASSERT_TRUE(fs::exists(work / "diffuse.exr"));
+  ASSERT_FALSE(fs::exists(dir));
+  fs::copy(f.db, work, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  for (const char* unit : {"manifest.yaml", "images/ward/00002.exr", "embedding/basis.f32",
+                           "conversions/ward_to_lafortune.f32"})
+    fs::remove(work / unit);
+
+  PrecomputeRequest other{tiny_profile(), dir, true, 0, {}};
+  other.profile.resolution = 16;
+  try {
+    precompute_database(other, f.env, f.scene);
+    ADD_FAILURE() << "resumed with another resolution";
+  } catch (const DatabaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("settings.yaml"), std::string::npos) << e.what();
+  }
+
+  std::vector<std::string> log;
+  PrecomputeRequest resume{tiny_profile(), dir, true, 0, {}};
+  resume.observer.log = [&](const std::string& line) { log.push_back(line); };
+  precompute_database(resume, f.env, f.scene);
+  EXPECT_FALSE(fs::exists(work));
+  EXPECT_NE(std::find(log.begin(), log.end(), "render: 11 images, 10 reused"), log.end());
+  EXPECT_EQ(tree(dir), tree(f.db));
+}
+
+// Two shards render disjoint halves of the images; merged, they give the reference database
+// byte for byte. A merge with a shard missing or given twice is refused.
+TEST(Database, ShardsMergeIntoTheSameDatabase) {
+  const Fixture& f = fixture();
+  std::vector<fs::path> shards;
+  for (int i = 0; i < 2; ++i) {
+    shards.push_back(scratch("shard" + std::to_string(i)));
+    PrecomputeRequest request{tiny_profile(), shards.back(), false, 0, {}};
+    request.shard_index = i, request.shard_count = 2;
+    precompute_database(request, f.env, f.scene);
+    EXPECT_TRUE(fs::exists(shards.back() / "shard.yaml"));
+  }
+  EXPECT_TRUE(fs::exists(shards[0] / "diffuse.exr"));
+  EXPECT_FALSE(fs::exists(shards[1] / "diffuse.exr"));
+  const fs::path merged = scratch("merged");
+  const PrecomputeRequest request{tiny_profile(), merged, false, 0, {}};
+  try {
+    merge_shards({shards[0], shards[0]}, request, f.env, f.scene);
+    ADD_FAILURE() << "merged a shard twice";
+  } catch (const DatabaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("given twice"), std::string::npos) << e.what();
+  }
+  fs::remove_all(merged.string() + ".partial");
+  try {
+    merge_shards({shards[1]}, request, f.env, f.scene);
+    ADD_FAILURE() << "merged without shard 0";
+  } catch (const DatabaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("shard 0/2 is missing"), std::string::npos) << e.what();
+  }
+  fs::remove_all(merged.string() + ".partial");
+  merge_shards(shards, request, f.env, f.scene);
+  EXPECT_EQ(tree(merged), tree(f.db));
+}
+
+}  // namespace
+}  // namespace brdfnav
