@@ -46,11 +46,9 @@ void emit_settings(YAML::Emitter& out, const Profile& p, const EnvMap& env, cons
   out << YAML::EndMap;
   const RenderQuality& q = p.quality;
   out << YAML::Key << "render_quality" << YAML::Value << YAML::Flow << YAML::BeginMap;
-  out << YAML::Key << "far_size" << YAML::Value << q.far_size;
-  out << YAML::Key << "core_size" << YAML::Value << q.core_size;
-  out << YAML::Key << "core_reach" << YAML::Value << q.core_reach;
-  out << YAML::Key << "subtexel_levels" << YAML::Value << q.subtexel_levels;
-  out << YAML::Key << "max_nodes" << YAML::Value << q.max_nodes << YAML::EndMap;
+  out << YAML::Key << "texels_per_width" << YAML::Value << q.texels_per_width;
+  out << YAML::Key << "reach" << YAML::Value << q.reach;
+  out << YAML::Key << "max_split" << YAML::Value << q.max_split << YAML::EndMap;
   out << YAML::Key << "pca" << YAML::Value << YAML::Flow << YAML::BeginMap;
   out << YAML::Key << "components" << YAML::Value << p.pca.components;
   out << YAML::Key << "oversample" << YAML::Value << p.pca.oversample;

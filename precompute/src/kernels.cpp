@@ -63,12 +63,16 @@ KernelShape shape(const Lafortune& l, const Vec3& wo) {
 
 KernelShape shape(const He& l, const Vec3& wo) {
   // The directional-diffuse lobe is a Poisson mixture of Gaussians in the projected half vector;
-  // its rough limit is Beckmann with slope 2 sigma / tau, its smooth limit the m = 1 term of width
-  // lambda / (sqrt(2) pi tau) in the projected half vector (~ 2 cos_o slope).
-  const double cos_o = std::max(wo.z(), kMinCos);
-  const double smooth = He::kLambda[2] / (std::sqrt(8.0) * kPi * l.tau * cos_o);
-  const double s = std::max(smooth, std::sqrt(2.0) * l.sigma / l.tau);
-  return half_vector_shape(wo, s, s);
+  // its rough limit is Beckmann with slope 2 sigma / tau (the same in every channel), its smooth
+  // limit the m = 1 term of width lambda / (sqrt(2) pi tau) in the projected half vector
+  // (~ 2 cos_o slope), wider in red than in blue.
+  const double cos_o = std::max(wo.z(), kMinCos), rough = std::sqrt(2.0) * l.sigma / l.tau;
+  Rgb slope;
+  for (int c = 0; c < 3; ++c)
+    slope[c] = std::max(rough, He::kLambda[c] / (std::sqrt(8.0) * kPi * l.tau * cos_o));
+  KernelShape s = half_vector_shape(wo, slope.minCoeff(), slope.minCoeff());
+  s.channel_scale = slope / slope.minCoeff();
+  return s;
 }
 
 }  // namespace

@@ -7,17 +7,20 @@
 namespace brdfnav {
 
 // Where a kernel is large: around `peak` (unit), roughly a Gaussian with angular standard
-// deviation `major_width` along the tangent `major` and `minor_width` across it. Only steers the
-// quadrature's refinement: a wrong shape costs time or accuracy, never what is summed.
+// deviation `major_width` along the tangent `major` and `minor_width` across it, in its narrowest
+// channel; channel c is `channel_scale[c]` (>= 1) times wider. Only steers the quadrature: a
+// wrong shape costs time or accuracy, never what is summed.
 struct KernelShape {
   Vec3 peak;
   Vec3 major;
   double major_width;
   double minor_width;
+  Rgb channel_scale = Rgb::Ones();
 
   static KernelShape isotropic(const Vec3& peak, double width);
   KernelShape to_world(const Frame& frame) const {
-    return {frame.from_local(peak), frame.from_local(major), major_width, minor_width};
+    return {frame.from_local(peak), frame.from_local(major), major_width, minor_width,
+            channel_scale};
   }
 };
 

@@ -1,31 +1,24 @@
-// The per-pixel quadrature: integral of L_env(w) K(w) dw as a sum over a cut of the environment's
-// quadtree, each node of the cut contributing power * K(centroid) (docs/RENDERER.md). The cut is
-// chosen from the kernel's shape alone:
-//   - in the core (the ellipse of core_reach standard deviations around the peak) nodes are
-//     split until their radius is at most core_size narrow widths (and core_limit radians); the
-//     midpoint rule's error there, spread : hessian(K) / 2, is corrected to first order with the
-//     Gaussian of the shape;
-//   - beyond it nodes are split until their radius is at most far_size times their distance
-//     from the core. Centroids are luminance-weighted, so a bright lamp in a coarse far node is
-//     still where it is, which is what the lobe's tail sees.
-// The traversal order is fixed and depends only on the pixel: results are deterministic.
+// The per-pixel quadrature (docs/RENDERER.md): integral of L_env(w) K(w) dw as
+//   sum over the pyramid nodes of one level inside the kernel's window of power * K(centroid)
+//   + sum over the hot texels of radiance * integral of K over the texel.
+// The level is the coarsest whose nodes are at most 1 / texels_per_width of the kernel's narrowest
+// width (pieces of texels below level 0); the window is the ellipse of `reach` widths around the
+// kernel's peak. Luminance-weighted centroids make the rule exact to first order in the kernel;
+// the hot texels (lamps), which lobes see far into their tails, are integrated over pieces as
+// fine as the lobe needs wherever it reaches them. No randomness, a fixed order of summation:
+// results are deterministic and continuous in the kernel's parameters.
 #pragma once
 
-#include "env_tree.h"
+#include "env_pyramid.h"
 #include "kernels.h"
 
 #include <brdfnav/precompute/render.h>
 
+#include <array>
+#include <utility>
 #include <vector>
 
 namespace brdfnav {
-
-struct QuadratureNode {
-  int level, x, y;
-};
-
-// Reused between pixels by one thread.
-using QuadratureStack = std::vector<QuadratureNode>;
 
 // Visibility of the environment from the pixel: always true on the sphere.
 struct AlwaysVisible {
@@ -35,110 +28,191 @@ struct AlwaysVisible {
 template <typename Kernel, typename Visible = AlwaysVisible>
 class Quadrature {
  public:
-  // `horizon` is the normal of the half space where the kernel lives (nodes wholly below it are
-  // skipped); `shape` is in world space.
-  Quadrature(const EnvTree& tree, const Kernel& kernel, const KernelShape& shape,
-             const Vec3& horizon, const RenderQuality& quality, Visible visible = {})
-      : tree_(tree),
-        kernel_(kernel),
-        peak_(shape.peak),
-        major_axis_(shape.major),
-        minor_axis_(shape.peak.cross(shape.major)),
-        major_width_(shape.major_width),
-        minor_width_(shape.minor_width),
-        inv_var_(1 / (shape.major_width * shape.major_width),
-                 1 / (shape.minor_width * shape.minor_width)),
-        horizon_(horizon),
-        visible_(visible),
-        min_level_(-quality.subtexel_levels),
-        reach_(quality.core_reach),
-        core_outer_(quality.core_reach * shape.major_width),
-        core_radius_(core_radius(shape, quality)),
-        far_ratio_(quality.far_size),
-        max_nodes_(quality.max_nodes) {}
+  Quadrature(const EnvPyramid& env, const Kernel& kernel, const KernelShape& shape,
+             const RenderQuality& quality, Visible visible = {})
+      : env_(env), kernel_(kernel), peak_(shape.peak), major_(shape.major),
+        minor_(shape.peak.cross(shape.major)), visible_(visible) {
+    const double wide = shape.channel_scale.maxCoeff();
+    major_width_ = shape.major_width * wide;
+    minor_width_ = shape.minor_width * wide;
+    reach_ = quality.reach;
+    const double step = shape.minor_width / quality.texels_per_width;
+    level_ = 0;
+    while (level_ + 1 < env.level_count() && env.node_angle(level_ + 1) <= step) ++level_;
+    auto split = [&](double piece) {
+      return std::clamp(static_cast<int>(std::ceil(env.node_angle(0) / piece)), 1,
+                        quality.max_split);
+    };
+    split_ = level_ > 0 ? 1 : split(step);
+    hot_split_ = split(step / 2);
+  }
 
-  Rgb integrate(QuadratureStack& stack) const {
-    stack.clear();
-    const int top = tree_.top_level();
-    for (int y = tree_.height(top) - 1; y >= 0; --y)
-      for (int x = tree_.width(top) - 1; x >= 0; --x) stack.push_back({top, x, y});
-    Rgb sum = Rgb::Zero();
-    int splits = 0;
-    while (!stack.empty()) {
-      const QuadratureNode n = stack.back();
-      stack.pop_back();
-      const EnvNode node = tree_.node(n.level, n.x, n.y);
-      if (below_horizon(node)) continue;
-      const Region region = classify(node);
-      if (region == Region::split && n.level > min_level_ && ++splits < max_nodes_) {
-        for (int cy = tree_.children_y(n.level, n.y) - 1; cy >= 0; --cy)
-          for (int cx = tree_.children_x(n.level, n.x) - 1; cx >= 0; --cx)
-            stack.push_back({n.level - 1, 2 * n.x + cx, 2 * n.y + cy});
-        continue;
-      }
-      Rgb k = kernel_.value(node.centroid);
-      if (!(k > 0).any() || !visible_(node.centroid)) continue;
-      if (region != Region::far) k *= curvature_correction(node);
-      sum += node.power * k;
-    }
+  Rgb integrate() const {
+    Rgb sum = window_sum();
+    for (const EnvPyramid::HotTexel& t : env_.hot()) sum += hot_sum(t);
     return sum;
   }
 
  private:
-  enum class Region { split, core, far };
-
-  // The core is coarsened when it would need more than max_nodes / 16 nodes (very anisotropic
-  // lobes at grazing angles), so that no pixel reaches the cap.
-  static double core_radius(const KernelShape& shape, const RenderQuality& q) {
-    const double budget = q.max_nodes / 16.0;
-    const double radius = std::min(q.core_size * shape.minor_width, q.core_limit);
-    const double area = std::min(2 * kPi, kPi * q.core_reach * q.core_reach * shape.major_width *
-                                              shape.minor_width);
-    const double nodes = area / (0.25 * radius * radius);
-    return nodes > budget ? radius * std::sqrt(nodes / budget) : radius;
+  // Whether a direction within `margin` radians of `w` can be inside the window.
+  bool in_window(const Vec3& w, double margin, double reach) const {
+    const Vec3 offset = w - peak_;
+    if (offset.squaredNorm() > 2 && reach * major_width_ < kPi / 2) return false;  // far side
+    const double a = std::max(0.0, std::abs(offset.dot(major_)) - margin) / major_width_;
+    const double b = std::max(0.0, std::abs(offset.dot(minor_)) - margin) / minor_width_;
+    return a * a + b * b <= reach * reach;
   }
 
-  bool below_horizon(const EnvNode& node) const {
-    return node.radius < kPi / 2 && node.centroid.dot(horizon_) < -std::sin(node.radius);
+  Rgb value(const Vec3& w) const {
+    const Rgb k = kernel_.value(w);
+    if (!(k > 0).any() || !visible_(w)) return Rgb::Zero();
+    return k;
   }
 
-  // A node is in the core when any point of the box of half-size `radius` around its centroid
-  // (along the shape's axes) is in the ellipse.
-  Region classify(const EnvNode& node) const {
-    const Vec3 offset = node.centroid - peak_;
-    const double r = node.radius;
-    const double a = std::max(0.0, std::abs(offset.dot(major_axis_)) - r) / major_width_;
-    const double b = std::max(0.0, std::abs(offset.dot(minor_axis_)) - r) / minor_width_;
-    if (a * a + b * b < reach_ * reach_) return r > core_radius_ ? Region::split : Region::core;
-    const double gap = std::max(0.0, offset.norm() - r - core_outer_);
-    return r > far_ratio_ * gap + core_radius_ ? Region::split : Region::far;
+  // Level-0 texel (x, y) of solid angle `omega` split into split x split pieces of its
+  // radiance, each at the texel's centre moved along the tangents of theta and phi (exact to
+  // second order in the texel's size) and worth an equal share of the solid angle.
+  Rgb pieces(int x, int y, const Rgb& radiance, double omega, int split) const {
+    const int w = env_.width(0), h = env_.height(0);
+    const double theta = kPi * (y + 0.5) / h, phi = 2 * kPi * ((x + 0.5) / w - 0.5);
+    const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
+    const Vec3 centre(-st * sp, ct, st * cp), e_theta(-ct * sp, -st, ct * cp), e_phi(-cp, 0, -sp);
+    const double d_theta = kPi / h / split, d_phi = 2 * kPi / w * st / split;
+    Rgb sum = Rgb::Zero();
+    for (int j = 0; j < split; ++j) {
+      const Vec3 row = centre + ((j + 0.5) - 0.5 * split) * d_theta * e_theta;
+      for (int i = 0; i < split; ++i)
+        sum += value((row + ((i + 0.5) - 0.5 * split) * d_phi * e_phi).normalized());
+    }
+    return sum * radiance * (omega / (split * split));
   }
 
-  // The midpoint rule's error on a node is about spread : hessian(K) / 2. With K locally the
-  // Gaussian of the shape, hessian(K) / K = (A x)(A x)^T - A (A = diag(1 / width^2), x the
-  // tangent offset from the peak along the axes), so the node's value is scaled by
-  // 1 + ((A x).S.(A x) - tr(A S)) / 2, S its spread in the same axes.
-  double curvature_correction(const EnvNode& node) const {
-    const Vec3 offset = node.centroid - peak_;
-    const Eigen::Vector2d ax =
-        Eigen::Vector2d(offset.dot(major_axis_), offset.dot(minor_axis_)).cwiseProduct(inv_var_);
-    const Vec3 s1 = node.spread * major_axis_, s2 = node.spread * minor_axis_;
-    Eigen::Matrix2d s;
-    s << major_axis_.dot(s1), major_axis_.dot(s2), minor_axis_.dot(s1), minor_axis_.dot(s2);
-    const double c = 0.5 * (ax.dot(s * ax) - s(0, 0) * inv_var_[0] - s(1, 1) * inv_var_[1]);
-    return std::clamp(1 + c, 0.5, 1.5);
+  // The nodes of the window: rows, then the span of columns each row's band reaches.
+  Rgb window_sum() const {
+    const int w = env_.width(level_);
+    const double node = env_.node_angle(level_), margin = 1.5 * node;
+    int y0 = 0;
+    std::vector<std::pair<int, int>> spans;
+    if (!ellipse_spans(margin, y0, spans)) cap_spans(margin, y0, spans);
+    Rgb sum = Rgb::Zero();
+    for (std::size_t r = 0; r < spans.size(); ++r) {
+      const int y = y0 + static_cast<int>(r);
+      for (int xs = spans[r].first; xs <= spans[r].second; ++xs) {
+        const int x = ((xs % w) + w) % w;
+        const EnvNode n = env_.node(level_, x, y);
+        if (!(n.power > 0).any() || !in_window(n.centroid, margin, reach_)) continue;
+        if (split_ == 1) {
+          sum += n.power * value(n.centroid);
+        } else {
+          const double omega = env_.texel_solid_angle(y);
+          sum += pieces(x, y, n.power / omega, omega, split_);
+        }
+      }
+    }
+    return sum;
   }
 
-  const EnvTree& tree_;
+  // Spans of the spherical cap of the window's major radius (any window, but loose for narrow
+  // ellipses); whole rows where the cap reaches a pole.
+  void cap_spans(double margin, int& y0, std::vector<std::pair<int, int>>& spans) const {
+    const int w = env_.width(level_), h = env_.height(level_);
+    const double node = env_.node_angle(level_);
+    const double radius = std::min(kPi, reach_ * major_width_ + margin);
+    const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
+    const double u_p = EnvMap::texcoord(peak_).x();
+    y0 = std::max(0, static_cast<int>(std::floor((theta_p - radius) / node)));
+    const int y1 = std::min(h - 1, static_cast<int>(std::floor((theta_p + radius) / node)));
+    for (int y = y0; y <= y1; ++y) {
+      const double half = half_width(theta_p, radius, y * node, (y + 1) * node);
+      int x0 = 0, x1 = w - 1;
+      if (half < kPi) {
+        x0 = static_cast<int>(std::floor((u_p - half / (2 * kPi)) * w));
+        x1 = std::min(x0 + w - 1, static_cast<int>(std::floor((u_p + half / (2 * kPi)) * w)));
+      }
+      spans.emplace_back(x0, x1);
+    }
+  }
+
+  // Spans of a polygon around the window's ellipse in texel coordinates (columns unwrapped around
+  // the peak's), scan-converted row by row. False when the window is too wide or reaches a pole,
+  // where lat-long coordinates fold: cap_spans() then.
+  bool ellipse_spans(double margin, int& y0, std::vector<std::pair<int, int>>& spans) const {
+    constexpr int kVertices = 32;
+    const double a = reach_ * major_width_ + margin, b = reach_ * minor_width_ + margin;
+    const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
+    if (a > 1.0 || theta_p - 1.2 * a <= 0 || theta_p + 1.2 * a >= kPi) return false;
+    const int w = env_.width(level_), h = env_.height(level_);
+    const double x_p = EnvMap::texcoord(peak_).x() * w;
+    // Circumscribed: the polygon's edges stay outside the ellipse.
+    const double grow = 1 / std::cos(kPi / kVertices);
+    std::array<Vec2, kVertices + 1> p;
+    double y_min = h, y_max = 0;
+    for (int k = 0; k < kVertices; ++k) {
+      const double t = 2 * kPi * k / kVertices;
+      const Vec3 d = (peak_ + grow * (a * std::cos(t) * major_ + b * std::sin(t) * minor_));
+      const Vec2 uv = EnvMap::texcoord(d);
+      double x = uv.x() * w - x_p;
+      x -= w * std::round(x / w);
+      p[k] = Vec2(x_p + x, uv.y() * h);
+      y_min = std::min(y_min, p[k].y()), y_max = std::max(y_max, p[k].y());
+    }
+    p[kVertices] = p[0];
+    y0 = std::max(0, static_cast<int>(std::floor(y_min)));
+    const int y1 = std::min(h - 1, static_cast<int>(std::floor(y_max)));
+    for (int y = y0; y <= y1; ++y) {
+      double lo = 1e300, hi = -1e300;
+      for (int k = 0; k < kVertices; ++k) {
+        const Vec2 &e0 = p[k], &e1 = p[k + 1];
+        const double t0 = std::max<double>(y, std::min(e0.y(), e1.y()));
+        const double t1 = std::min(y + 1.0, std::max(e0.y(), e1.y()));
+        if (t0 > t1) continue;
+        const double dy = e1.y() - e0.y();
+        for (double t : {t0, t1}) {
+          const double x = dy == 0 ? e0.x() : e0.x() + (t - e0.y()) / dy * (e1.x() - e0.x());
+          lo = std::min(lo, x), hi = std::max(hi, x);
+        }
+      }
+      if (lo > hi) lo = hi = x_p;
+      const int x0 = static_cast<int>(std::floor(lo));
+      spans.emplace_back(x0, std::min(x0 + w - 1, static_cast<int>(std::floor(hi))));
+    }
+    return true;
+  }
+
+  // Largest azimuth difference from the peak (at polar angle theta_p) of the directions within
+  // `radius` of it whose polar angle is in [t0, t1]; pi when the cap reaches a pole.
+  static double half_width(double theta_p, double radius, double t0, double t1) {
+    if (theta_p - radius <= 0 || theta_p + radius >= kPi) return kPi;
+    double best = 0;
+    auto at = [&](double t) {
+      const double s = std::sin(t) * std::sin(theta_p);
+      if (s <= 0) return kPi;
+      const double c = (std::cos(radius) - std::cos(t) * std::cos(theta_p)) / s;
+      return c <= -1 ? kPi : c >= 1 ? 0.0 : std::acos(c);
+    };
+    best = std::max(at(t0), at(t1));
+    // The widest latitude of the cap, cos(t) = cos(theta_p) / cos(radius), when in the band.
+    if (radius < kPi / 2) {
+      const double t = std::acos(std::clamp(std::cos(theta_p) / std::cos(radius), -1.0, 1.0));
+      if (t0 < t && t < t1) best = std::max(best, at(t));
+    }
+    return best;
+  }
+
+  // A hot texel, in pieces twice as fine as the window's step wherever a wider window reaches
+  // it (the lobe's tails see lamps from afar, where the kernel falls fastest); whole elsewhere.
+  Rgb hot_sum(const EnvPyramid::HotTexel& t) const {
+    if (hot_split_ > 1 && in_window(t.centroid, env_.node_angle(0), 2 * reach_))
+      return pieces(t.x, t.y, t.radiance, t.solid_angle, hot_split_);
+    return value(t.centroid) * (t.radiance * t.solid_angle);
+  }
+
+  const EnvPyramid& env_;
   const Kernel& kernel_;
-  Vec3 peak_, major_axis_, minor_axis_;
-  double major_width_, minor_width_;
-  Eigen::Vector2d inv_var_;
-  Vec3 horizon_;
+  Vec3 peak_, major_, minor_;
+  double major_width_, minor_width_, reach_;
+  int level_, split_, hot_split_;
   Visible visible_;
-  int min_level_;
-  double reach_, core_outer_, core_radius_, far_ratio_;
-  int max_nodes_;
 };
 
 }  // namespace brdfnav

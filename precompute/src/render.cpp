@@ -15,11 +15,9 @@ namespace brdfnav {
 
 RenderQuality RenderQuality::finer(double factor) const {
   RenderQuality q = *this;
-  q.core_size /= factor;
-  q.core_limit /= factor;
-  q.far_size /= factor;
-  q.subtexel_levels += static_cast<int>(std::ceil(std::log2(factor)));
-  q.max_nodes *= static_cast<int>(std::ceil(factor * factor));
+  q.texels_per_width *= factor;
+  q.reach *= 1 + 0.25 * std::log2(std::max(factor, 1.0));
+  q.max_split = static_cast<int>(std::ceil(max_split * factor));
   return q;
 }
 
@@ -61,7 +59,7 @@ std::vector<double> mirror_widths(const SurfaceBuffer& s, double texel_angle) {
   return widths;
 }
 
-// Runs row(y, stack) for every image row on `threads` workers while the calling thread reports
+// Runs row(y) for every image row on `threads` workers while the calling thread reports
 // progress. Rows are independent, so the result does not depend on the scheduling.
 template <typename Row>
 void parallel_rows(int rows, int threads, const ProgressSink& progress, Row row) {
@@ -69,9 +67,8 @@ void parallel_rows(int rows, int threads, const ProgressSink& progress, Row row)
   std::mutex mutex;
   std::condition_variable finished;
   auto worker = [&] {
-    QuadratureStack stack;
     for (int y; (y = next++) < rows;) {
-      row(y, stack);
+      row(y);
       if (++done == rows) {
         std::lock_guard lock(mutex);
         finished.notify_all();
@@ -95,14 +92,17 @@ struct Renderer::Impl {
   const Scene& scene;
   int resolution;
   RenderOptions options;
-  EnvTree tree;
+  EnvPyramid pyramid;
   SurfaceBuffer surface;
   std::vector<double> mirror_width;
   std::optional<Image> diffuse;
 
   Impl(const EnvMap& e, const Scene& s, int res, RenderOptions o)
-      : env(e), scene(s), resolution(res), options(std::move(o)), tree(e) {
+      : env(e), scene(s), resolution(res), options(std::move(o)), pyramid(e) {
     if (res < 1) throw std::invalid_argument("resolution must be at least 1");
+    const RenderQuality& q = options.quality;
+    if (!(q.texels_per_width > 0) || !(q.reach > 0) || q.max_split < 1)
+      throw std::invalid_argument("render quality: every knob must be positive");
     surface = scene.trace_camera(res);
     mirror_width = mirror_widths(surface, kPi / env.height());
   }
@@ -112,16 +112,16 @@ struct Renderer::Impl {
     return std::max(1u, std::thread::hardware_concurrency());
   }
 
-  // Image whose covered pixels hold pixel(point, index, stack).
+  // Image whose covered pixels hold pixel(point, index).
   template <typename Pixel>
   Image render_pass(Pixel pixel) {
     Image image(resolution, resolution);
-    parallel_rows(resolution, threads(), options.progress, [&](int y, QuadratureStack& stack) {
+    parallel_rows(resolution, threads(), options.progress, [&](int y) {
       for (int x = 0; x < resolution; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * resolution + x;
         const SurfacePoint& p = surface.points[i];
         if (!p.covered) continue;
-        const Rgb v = pixel(p, i, stack);
+        const Rgb v = pixel(p, i);
         float* out = image.pixel(x, y);
         for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(v[c]);
         out[3] = 1.f;
@@ -131,34 +131,30 @@ struct Renderer::Impl {
   }
 
   template <typename Kernel>
-  Rgb integrate(const Kernel& kernel, const KernelShape& shape, const Vec3& horizon,
-                const SurfacePoint& p, QuadratureStack& stack) const {
-    if (scene.convex())
-      return Quadrature(tree, kernel, shape, horizon, options.quality).integrate(stack);
+  Rgb integrate(const Kernel& kernel, const KernelShape& shape, const SurfacePoint& p) const {
+    if (scene.convex()) return Quadrature(pyramid, kernel, shape, options.quality).integrate();
     auto visible = [&](const Vec3& w) { return !scene.occluded(p, w); };
-    return Quadrature(tree, kernel, shape, horizon, options.quality, visible).integrate(stack);
+    return Quadrature(pyramid, kernel, shape, options.quality, visible).integrate();
   }
 
-  Rgb diffuse_pixel(const SurfacePoint& p, QuadratureStack& stack) const {
-    const KernelShape shape = KernelShape::isotropic(p.normal, kLambertWidth);
-    return integrate(LambertKernel{p.normal}, shape, p.normal, p, stack);
+  Rgb diffuse_pixel(const SurfacePoint& p) const {
+    return integrate(LambertKernel{p.normal}, KernelShape::isotropic(p.normal, kLambertWidth), p);
   }
 
   template <typename L>
-  Rgb specular_pixel(const L& lobe, const Lobe& any, const SurfacePoint& p, std::size_t i,
-                     QuadratureStack& stack) const {
+  Rgb specular_pixel(const L& lobe, const Lobe& any, const SurfacePoint& p, std::size_t i) const {
     const Frame frame = pixel_frame(p);
     const Vec3 wo = frame.to_local(kViewDirection);
     if (wo.z() <= 0) return Rgb::Zero();
     const KernelShape shape = lobe_shape(any, wo).to_world(frame);
-    Rgb sum = integrate(LobeKernel<L>{lobe, frame, wo}, shape, p.normal, p, stack);
+    Rgb sum = integrate(LobeKernel<L>{lobe, frame, wo}, shape, p);
     if constexpr (requires { lobe.mirror_weight(wo); }) {
       const Rgb weight = lobe.mirror_weight(wo);
       if ((weight > 0).any()) {
         const Vec3 mirror = reflect(kViewDirection, p.normal);
         const double width = mirror_width[i];
-        const MirrorKernel kernel(mirror, weight, width);
-        sum += integrate(kernel, KernelShape::isotropic(mirror, width), mirror, p, stack);
+        sum += integrate(MirrorKernel(mirror, weight, width), KernelShape::isotropic(mirror, width),
+                         p);
       }
     }
     return sum;
@@ -187,9 +183,8 @@ void Renderer::set_progress(ProgressSink progress) {
 
 const Image& Renderer::diffuse() {
   if (!impl_->diffuse) {
-    impl_->diffuse = impl_->render_pass([&](const SurfacePoint& p, std::size_t, QuadratureStack& h) {
-      return impl_->diffuse_pixel(p, h);
-    });
+    impl_->diffuse = impl_->render_pass(
+        [&](const SurfacePoint& p, std::size_t) { return impl_->diffuse_pixel(p); });
   }
   return *impl_->diffuse;
 }
@@ -197,9 +192,10 @@ const Image& Renderer::diffuse() {
 Image Renderer::specular(const Lobe& lobe) {
   return std::visit(
       [&](const auto& l) {
-        return impl_->render_pass([&](const SurfacePoint& p, std::size_t i, QuadratureStack& h) {
-          return impl_->specular_pixel(l, lobe, p, i, h);
-        });
+        return impl_->render_pass(
+            [&](const SurfacePoint& p, std::size_t i) {
+              return impl_->specular_pixel(l, lobe, p, i);
+            });
       },
       lobe);
 }
@@ -213,9 +209,8 @@ Image Renderer::render(const Material& material) {
 ImageMetadata render_metadata(const Renderer& renderer, const Material* material) {
   const RenderQuality& q = renderer.options().quality;
   char quality[160];
-  std::snprintf(quality, sizeof quality,
-                "core_size=%g core_limit=%g core_reach=%g far_size=%g subtexel_levels=%d",
-                q.core_size, q.core_limit, q.core_reach, q.far_size, q.subtexel_levels);
+  std::snprintf(quality, sizeof quality, "texels_per_width=%g reach=%g max_split=%d",
+                q.texels_per_width, q.reach, q.max_split);
   ImageMetadata m{{"brdfnav:env", renderer.env().source()},
                   {"brdfnav:env_sha1", renderer.env().pixel_hash()},
                   {"brdfnav:scene", renderer.scene().description()},

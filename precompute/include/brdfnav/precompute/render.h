@@ -4,8 +4,9 @@
 // its linear parts so that any material's image is exactly rho_d * I_diffuse + rho_s * I_spec:
 //   I_diffuse: Lambert with rho_d = 1 (independent of the model, computed once and cached);
 //   I_spec:    the model's lobe with rho_s = 1, plus He's mirror term as a filtered lookup.
-// The integral is a deterministic adaptive quadrature over a quadtree of the environment's texels
-// (docs/RENDERER.md): images are bit-identical for the same inputs whatever the thread count.
+// The integral is a deterministic quadrature over a pyramid of the environment restricted to the
+// lobe, with the brightest texels integrated apart (docs/RENDERER.md): images are bit-identical
+// for the same inputs whatever the thread count.
 #pragma once
 
 #include <brdfnav/core/material.h>
@@ -19,17 +20,14 @@
 
 namespace brdfnav {
 
-// Knobs of the quadrature (docs/RENDERER.md). The defaults meet the accuracy target: the error
-// is at most a tenth of the change a 10% parameter step makes. finer(4) is the reference.
+// Knobs of the quadrature (docs/RENDERER.md). The defaults meet the accuracy target: the error is
+// at most a tenth of the change a 10% parameter step makes. finer(4) is the reference.
 struct RenderQuality {
-  double core_size = 0.5;    // largest node radius in the lobe's core, in narrow lobe widths
-  double core_limit = 0.12;  // ... and in radians (broad lobes)
-  double core_reach = 3;     // radius of the core around the lobe's peak, in lobe widths
-  double far_size = 1;       // beyond the core: largest node radius / its distance from the core
-  int subtexel_levels = 5;   // a texel may be split into up to 2^5 x 2^5 pieces
-  int max_nodes = 1 << 16;   // safety cap of split nodes per pixel and term
+  double texels_per_width = 2.5;  // quadrature nodes per lobe width (its narrowest sigma)
+  double reach = 4;               // the window around the lobe's peak, in lobe widths
+  int max_split = 32;             // a texel is cut into at most max_split^2 pieces
 
-  // The same quadrature `factor` times finer in angle.
+  // The same quadrature `factor` times finer in angle, over a wider window.
   RenderQuality finer(double factor) const;
 };
 

@@ -1,0 +1,40 @@
+// How accurate the pre-renderer is, in the metric's own terms (issue #3): for a material and one
+// of its parameters,
+//   ratio = d(image at default quality, converged reference) / d(reference at p, reference at p')
+// with p' the parameter changed by 10%. A ratio of 0.1 means the renderer's error is a tenth of
+// the smallest step a user would take; the pre-rendered grids need <= 0.1 everywhere.
+#pragma once
+
+#include <brdfnav/core/material.h>
+#include <brdfnav/precompute/render.h>
+
+#include <string>
+#include <vector>
+
+namespace brdfnav {
+
+// Smooth, medium and rough settings of every model: the points where accuracy is measured.
+struct AccuracySetting {
+  ModelId model;
+  std::string name;            // "smooth", "medium", "rough"
+  std::vector<double> params;  // in model_info(model).params order
+};
+const std::vector<AccuracySetting>& accuracy_settings();
+
+struct AccuracyResult {
+  std::string param;  // the parameter changed by 10%
+  double error;       // d(default, reference) at the setting
+  double step;        // d(reference at p, reference at p changed by 10%)
+  double ratio() const { return error / step; }
+};
+
+// The reference quality: 4x finer (16x the samples).
+RenderQuality reference_quality(const RenderQuality& quality);
+
+// One result per non-linear parameter of the setting, for its lobe alone (rho_d = 0, rho_s = 1:
+// the hardest case for the cube root, and the images the embedding is built from). Both
+// renderers must share the environment, scene and resolution.
+std::vector<AccuracyResult> measure_accuracy(Renderer& renderer, Renderer& reference,
+                                             const AccuracySetting& setting);
+
+}  // namespace brdfnav

@@ -1,0 +1,112 @@
+#include "env_pyramid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace brdfnav {
+
+namespace {
+
+// Texels brighter than kHotFactor times the map's mean luminance are hot, at most kMaxHot of
+// them (the brightest). On interior.exr that is about 100 texels holding 40% of the power.
+constexpr double kHotFactor = 100;
+constexpr std::size_t kMaxHot = 512;
+
+}  // namespace
+
+LatLongRect lat_long_rect(double x0, double x1, double y0, double y1, int width, int height) {
+  // The differences below are written in forms without cancellation: pieces of texels are tiny.
+  const double phi_m = kPi * ((x0 + x1) / width - 1), half_dphi = kPi * (x1 - x0) / width;
+  const double theta_m = kPi * (y0 + y1) / (2 * height), dtheta = kPi * (y1 - y0) / height;
+  const double sin_tm = std::sin(theta_m), sin_hd = std::sin(dtheta / 2);
+  // integral of sin^2(theta) over [theta0, theta1]
+  const double s2 = 0.5 * ((dtheta - std::sin(dtheta)) + 2 * std::sin(dtheta) * sin_tm * sin_tm);
+  const double sin_hp = std::sin(half_dphi);
+  const Vec3 moment(-s2 * 2 * std::sin(phi_m) * sin_hp,
+                    0.5 * std::sin(2 * theta_m) * std::sin(dtheta) * 2 * half_dphi,
+                    s2 * 2 * std::cos(phi_m) * sin_hp);
+  return {2 * half_dphi * 2 * sin_tm * sin_hd, moment.normalized()};
+}
+
+EnvPyramid::EnvPyramid(const EnvMap& env) {
+  build_texels(env);
+  while (levels_.back().width > 2 || levels_.back().height > 1)
+    levels_.push_back(half_of(levels_.back()));
+  for (Level& l : levels_) l.luminance = {};
+}
+
+void EnvPyramid::build_texels(const EnvMap& env) {
+  const int w = env.width(), h = env.height();
+  double total = 0;
+  for (int y = 0; y < h; ++y) {
+    texel_solid_angle_.push_back(lat_long_rect(0, 1, y, y + 1, w, h).solid_angle);
+    for (int x = 0; x < w; ++x) total += luminance(env.texel(x, y)) * texel_solid_angle_[y];
+  }
+  const double threshold = kHotFactor * total / (4 * kPi);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (threshold > 0 && luminance(env.texel(x, y)) > threshold)
+        hot_.push_back({x, y, env.texel(x, y), lat_long_rect(x, x + 1, y, y + 1, w, h).centroid,
+                        texel_solid_angle_[y]});
+  // The brightest first, ties in map order: deterministic.
+  std::stable_sort(hot_.begin(), hot_.end(), [](const HotTexel& a, const HotTexel& b) {
+    return luminance(a.radiance) > luminance(b.radiance);
+  });
+  if (hot_.size() > kMaxHot) hot_.resize(kMaxHot);
+
+  Level texels{w, h, std::vector<float>(kStride * static_cast<std::size_t>(w) * h),
+               std::vector<double>(static_cast<std::size_t>(w) * h)};
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const LatLongRect rect = lat_long_rect(x, x + 1, y, y + 1, w, h);
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      const Rgb power = env.texel(x, y) * rect.solid_angle;
+      float* d = &texels.data[kStride * i];
+      for (int c = 0; c < 3; ++c) d[c] = static_cast<float>(rect.centroid[c]);
+      for (int c = 0; c < 3; ++c) d[3 + c] = static_cast<float>(power[c]);
+      texels.luminance[i] = luminance(power);
+    }
+  }
+  for (const HotTexel& t : hot_) {
+    const std::size_t i = static_cast<std::size_t>(t.y) * w + t.x;
+    for (int c = 0; c < 3; ++c) texels.data[kStride * i + 3 + c] = 0.f;
+    texels.luminance[i] = 0;
+  }
+  levels_.push_back(std::move(texels));
+}
+
+// A parent's power is its children's sum; its centroid their luminance-weighted mean direction
+// (the solid-angle weighted one where they are black, so that it stays inside the node).
+EnvPyramid::Level EnvPyramid::half_of(const Level& fine) const {
+  Level coarse{(fine.width + 1) / 2, (fine.height + 1) / 2, {}, {}};
+  const std::size_t count = static_cast<std::size_t>(coarse.width) * coarse.height;
+  coarse.data.assign(kStride * count, 0.f);
+  coarse.luminance.assign(count, 0.0);
+  for (int y = 0; y < coarse.height; ++y) {
+    for (int x = 0; x < coarse.width; ++x) {
+      Vec3 lit = Vec3::Zero(), plain = Vec3::Zero();
+      Rgb power = Rgb::Zero();
+      double lum = 0;
+      for (int fy = 2 * y; fy < std::min(2 * y + 2, fine.height); ++fy) {
+        for (int fx = 2 * x; fx < std::min(2 * x + 2, fine.width); ++fx) {
+          const std::size_t j = static_cast<std::size_t>(fy) * fine.width + fx;
+          const float* d = &fine.data[kStride * j];
+          const Vec3 c(d[0], d[1], d[2]);
+          lit += fine.luminance[j] * c;
+          plain += c;
+          power += Rgb(d[3], d[4], d[5]);
+          lum += fine.luminance[j];
+        }
+      }
+      const std::size_t i = static_cast<std::size_t>(y) * coarse.width + x;
+      const Vec3 centroid = (lum > 0 && lit.squaredNorm() > 0 ? lit : plain).normalized();
+      float* out = &coarse.data[kStride * i];
+      for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(centroid[c]);
+      for (int c = 0; c < 3; ++c) out[3 + c] = static_cast<float>(power[c]);
+      coarse.luminance[i] = lum;
+    }
+  }
+  return coarse;
+}
+
+}  // namespace brdfnav

@@ -1,0 +1,51 @@
+#include <brdfnav/precompute/render_accuracy.h>
+
+#include <algorithm>
+
+namespace brdfnav {
+
+const std::vector<AccuracySetting>& accuracy_settings() {
+  using M = ModelId;
+  static const std::vector<AccuracySetting> settings{
+      {M::blinn_phong, "smooth", {20000}},
+      {M::blinn_phong, "medium", {300}},
+      {M::blinn_phong, "rough", {5}},
+      {M::ward, "smooth", {0.01, 0.014}},
+      {M::ward, "medium", {0.08, 0.06}},
+      {M::ward, "rough", {0.4, 0.3}},
+      {M::cook_torrance, "smooth", {0.05, 0.015}},
+      {M::cook_torrance, "medium", {0.2, 0.12}},
+      {M::cook_torrance, "rough", {0.5, 0.5}},
+      {M::lafortune, "smooth", {0.57, 5000}},
+      {M::lafortune, "medium", {0.56, 200}},
+      {M::lafortune, "rough", {0.5, 5}},
+      {M::he, "smooth", {0.05, 20, 1.5}},
+      {M::he, "medium", {0.3, 8, 2}},
+      {M::he, "rough", {1.5, 4, 4}},
+  };
+  return settings;
+}
+
+RenderQuality reference_quality(const RenderQuality& quality) {
+  return quality.finer(4);
+}
+
+std::vector<AccuracyResult> measure_accuracy(Renderer& renderer, Renderer& reference,
+                                             const AccuracySetting& setting) {
+  const ModelInfo& info = model_info(setting.model);
+  const Image reference_image = reference.specular(make_lobe(setting.model, setting.params));
+  const double error =
+      image_distance(renderer.specular(make_lobe(setting.model, setting.params)), reference_image);
+  std::vector<AccuracyResult> results;
+  for (std::size_t d = 0; d < info.params.size(); ++d) {
+    std::vector<double> stepped = setting.params;
+    // Up by 10%, or down where that would leave the valid range (cz near 1).
+    stepped[d] *= stepped[d] * 1.1 <= info.params[d].valid_max ? 1.1 : 1 / 1.1;
+    const Image next = reference.specular(make_lobe(setting.model, stepped));
+    results.push_back({std::string(info.params[d].name), error,
+                       image_distance(reference_image, next)});
+  }
+  return results;
+}
+
+}  // namespace brdfnav
