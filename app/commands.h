@@ -18,6 +18,7 @@ void add_eval_commands(CLI::App& app);    // eval, models
 void add_demo_command(CLI::App& app);     // demo
 void add_render_commands(CLI::App& app);  // render, distance
 void add_precompute_commands(CLI::App& app);  // precompute, db-info
+void add_navigate_commands(CLI::App& app);    // neighbors, export
 
 // The options every command that renders shares: --env, --sanitize-env, --res, --scene.
 struct SceneOptions {

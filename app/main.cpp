@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   brdfnav::cli::add_demo_command(app);
   brdfnav::cli::add_render_commands(app);
   brdfnav::cli::add_precompute_commands(app);
+  brdfnav::cli::add_navigate_commands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,11 +1,13 @@
-// The C ABI of brdfnav.h over the C++ core. Every entry point runs its body inside guarded(),
-// the one place that turns C++ exceptions into a status code and a per-thread message.
+// The C ABI of brdfnav.h over the C++ core and navigator. Every entry point runs its body inside
+// guarded(), the one place that turns C++ exceptions into a status code and a per-thread message.
 #include <brdfnav/brdfnav.h>
 
 #include <brdfnav/core/material.h>
 #include <brdfnav/io/material_yaml.h>
+#include <brdfnav/navigator.h>
 
 #include <array>
+#include <memory>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -14,6 +16,18 @@
 struct brdfnav_closure {
   brdfnav::Material material;
   brdfnav::Closure closure;
+};
+
+struct brdfnav_navigator {
+  brdfnav::Navigator navigator;
+};
+
+struct brdfnav_neighbors {
+  struct Entry {
+    brdfnav::Neighbor neighbor;
+    std::vector<brdfnav_param_value> params;  // names point into the library's static strings
+  };
+  std::vector<Entry> entries;
 };
 
 namespace {
@@ -55,6 +69,10 @@ brdfnav_status guarded(Body&& body) noexcept {
     return fail(BRDFNAV_ERROR_IO, e.what());
   } catch (const MaterialError& e) {
     return fail(BRDFNAV_ERROR_PARSE, e.what());
+  } catch (const DatabaseError& e) {
+    return fail(BRDFNAV_ERROR_DATABASE, e.what());
+  } catch (const NavigatorError& e) {
+    return fail(BRDFNAV_ERROR_INVALID_ARGUMENT, e.what());
   } catch (const std::bad_alloc&) {
     return fail(BRDFNAV_ERROR_OUT_OF_MEMORY, "out of memory");
   } catch (const std::exception& e) {
@@ -66,6 +84,17 @@ brdfnav_status guarded(Body&& body) noexcept {
 
 void require(const void* pointer, const char* name) {
   if (!pointer) throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, std::string(name) + " is NULL");
+}
+
+// The functions that create an object: *out is NULL unless `make` (argument checks, then the
+// new object) succeeds.
+template <typename T, typename Make>
+brdfnav_status create_into(T** out, Make&& make) noexcept {
+  if (out) *out = nullptr;
+  return guarded([&] {
+    require(out, "out");
+    *out = make();
+  });
 }
 
 const ModelInfo& model_at(int model) {
@@ -163,6 +192,40 @@ void copy3(const Vector3& from, double to[3]) {
   for (int i = 0; i < 3; ++i) to[i] = from[i];
 }
 
+static_assert(BRDFNAV_TAB_LOBE == int(Tab::lobe) && BRDFNAV_TAB_DIFFUSE == int(Tab::diffuse) &&
+              BRDFNAV_TAB_SPECULAR == int(Tab::specular) &&
+              BRDFNAV_TAB_MODELS == int(Tab::models) && BRDFNAV_TAB_GALLERY == int(Tab::gallery));
+
+Tab tab_of(brdfnav_tab tab) {
+  const int value = static_cast<int>(tab);
+  if (value < 0 || value >= static_cast<int>(std::size(kTabs)))
+    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT,
+                   "tab " + std::to_string(value) + " is not a brdfnav_tab");
+  return kTabs[value];
+}
+
+brdfnav_neighbors* new_list(std::vector<Neighbor> neighbors) {
+  auto list = std::make_unique<brdfnav_neighbors>();
+  for (Neighbor& n : neighbors) {
+    const auto model = static_cast<std::size_t>(n.material.model);
+    std::vector<brdfnav_param_value> params;
+    for (std::size_t i = 0; i < n.material.params.size(); ++i)
+      params.push_back({CStrings::get().models[model].params[i][0].c_str(), n.material.params[i]});
+    list->entries.push_back({std::move(n), std::move(params)});
+  }
+  return list.release();
+}
+
+// A query of `navigator` whose neighbours become a new list in *out.
+template <typename Query>
+brdfnav_status list_query(const brdfnav_navigator* navigator, brdfnav_neighbors** out,
+                          Query&& query) {
+  return create_into(out, [&] {
+    require(navigator, "navigator");
+    return new_list(query(navigator->navigator));
+  });
+}
+
 }  // namespace
 
 extern "C" {
@@ -227,20 +290,16 @@ brdfnav_status brdfnav_get_param(int model, int param, brdfnav_param_desc* out) 
 }
 
 brdfnav_status brdfnav_closure_create(const brdfnav_material* material, brdfnav_closure** out) {
-  if (out) *out = nullptr;
-  return guarded([&] {
+  return create_into(out, [&] {
     require(material, "material");
-    require(out, "out");
-    *out = new_closure(material_from_struct(*material));
+    return new_closure(material_from_struct(*material));
   });
 }
 
 brdfnav_status brdfnav_closure_load(const char* path_or_spec, brdfnav_closure** out) {
-  if (out) *out = nullptr;
-  return guarded([&] {
+  return create_into(out, [&] {
     require(path_or_spec, "path_or_spec");
-    require(out, "out");
-    *out = new_closure(load_material(path_or_spec));
+    return new_closure(load_material(path_or_spec));
   });
 }
 
@@ -300,6 +359,81 @@ brdfnav_status brdfnav_closure_pdf(const brdfnav_closure* closure, const double 
     require(pdf, "pdf");
     *pdf = closure->closure.pdf(direction(wi, "wi"), direction(wo, "wo"));
   });
+}
+
+brdfnav_status brdfnav_navigator_open(const char* database_dir, brdfnav_navigator** out) {
+  return create_into(out, [&] {
+    require(database_dir, "database_dir");
+    return new brdfnav_navigator{Navigator::open(database_dir)};
+  });
+}
+
+void brdfnav_navigator_close(brdfnav_navigator* navigator) {
+  delete navigator;
+}
+
+brdfnav_status brdfnav_navigator_neighbors(const brdfnav_navigator* navigator,
+                                           const brdfnav_material* current, double radius,
+                                           brdfnav_tab tab, int clusters, brdfnav_neighbors** out) {
+  return list_query(navigator, out, [&](const Navigator& nav) {
+    require(current, "current");
+    return nav.neighbors(material_from_struct(*current), radius, tab_of(tab), clusters);
+  });
+}
+
+brdfnav_status brdfnav_navigator_neighbors_load(const brdfnav_navigator* navigator,
+                                                const char* path_or_spec, double radius,
+                                                brdfnav_tab tab, int clusters,
+                                                brdfnav_neighbors** out) {
+  return list_query(navigator, out, [&](const Navigator& nav) {
+    require(path_or_spec, "path_or_spec");
+    return nav.neighbors(load_material(path_or_spec), radius, tab_of(tab), clusters);
+  });
+}
+
+brdfnav_status brdfnav_navigator_gallery(const brdfnav_navigator* navigator, int count,
+                                         brdfnav_neighbors** out) {
+  return list_query(navigator, out, [&](const Navigator& nav) { return nav.gallery(count); });
+}
+
+brdfnav_status brdfnav_neighbors_count(const brdfnav_neighbors* list, size_t* count) {
+  return guarded([&] {
+    require(list, "list");
+    require(count, "count");
+    *count = list->entries.size();
+  });
+}
+
+brdfnav_status brdfnav_neighbors_get(const brdfnav_neighbors* list, size_t index,
+                                     brdfnav_neighbor* out) {
+  return guarded([&] {
+    require(list, "list");
+    if (index >= list->entries.size())
+      throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT,
+                     "neighbour index " + std::to_string(index) + " is outside [0, " +
+                         std::to_string(list->entries.size()) + ")");
+    require(out, "out");
+    const brdfnav_neighbors::Entry& e = list->entries[index];
+    const Neighbor& n = e.neighbor;
+    const Material& m = n.material;
+    brdfnav_neighbor result{};
+    result.tab = static_cast<brdfnav_tab>(n.tab);
+    result.label = n.label.c_str();
+    result.distance = n.distance;
+    result.flags = (n.at_boundary ? BRDFNAV_NEIGHBOR_AT_BOUNDARY : 0u) |
+                   (n.clamped ? BRDFNAV_NEIGHBOR_CLAMPED : 0u);
+    result.material.model = CStrings::get().models[static_cast<std::size_t>(m.model)].name.c_str();
+    result.material.params = e.params.data();
+    result.material.param_count = e.params.size();
+    copy3(m.rho_d, result.material.rho_d);
+    copy3(m.rho_s, result.material.rho_s);
+    result.material.colorspace = m.colorspace.c_str();
+    *out = result;
+  });
+}
+
+void brdfnav_neighbors_free(brdfnav_neighbors* list) {
+  delete list;
 }
 
 }  // extern "C"

@@ -23,6 +23,8 @@ namespace {
 
 constexpr std::array<std::string_view, 6> kTopLevelKeys{
     "brdfnav_material", "model", "params", "rho_d", "rho_s", "colorspace"};
+// What `brdfnav export` adds beside the material; a material reader skips them.
+constexpr std::array<std::string_view, 2> kExportKeys{"provenance", "equivalents"};
 
 std::string join(const std::vector<std::string_view>& names) {
   std::string out;
@@ -211,20 +213,9 @@ void validate_at_keys(const Material& m, std::string_view source, const Mapping&
   }
 }
 
-// Shortest text that reads back as the same double. Exponent forms get a '.' ("1e-05" ->
-// "1.0e-05") because YAML 1.1 readers (PyYAML) read a float without one as a string.
-std::string number_text(double v) {
-  std::array<char, 32> buf;
-  const auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  std::string text(buf.data(), end);
-  const std::size_t e = text.find('e');
-  if (e != std::string::npos && text.find('.') == std::string::npos) text.insert(e, ".0");
-  return text;
-}
-
 void emit_rgb(YAML::Emitter& out, const char* key, const Rgb& rgb) {
   out << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq;
-  for (int i = 0; i < 3; ++i) out << number_text(rgb[i]);
+  for (int i = 0; i < 3; ++i) out << yaml_number(rgb[i]);
   out << YAML::EndSeq;
 }
 
@@ -242,11 +233,23 @@ std::string read_text(const std::filesystem::path& path) {
 
 }  // namespace
 
+std::string yaml_number(double v) {
+  std::array<char, 32> buf;
+  const auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  std::string text(buf.data(), end);
+  // "1e-05" -> "1.0e-05": YAML 1.1 readers (PyYAML) read a float without a '.' as a string.
+  const std::size_t e = text.find('e');
+  if (e != std::string::npos && text.find('.') == std::string::npos) text.insert(e, ".0");
+  return text;
+}
+
 Material material_from_node(const YAML::Node& node, std::string_view source,
-                            bool schema_key_required) {
+                            bool schema_key_required, bool export_keys_allowed) {
   if (!node.IsMap())
     fail(source, node.Mark(), "material", "expected a mapping, got " + describe(node));
-  const Mapping top(node, source, "", {kTopLevelKeys.begin(), kTopLevelKeys.end()}, node.Mark());
+  std::vector<std::string_view> allowed(kTopLevelKeys.begin(), kTopLevelKeys.end());
+  if (export_keys_allowed) allowed.insert(allowed.end(), kExportKeys.begin(), kExportKeys.end());
+  const Mapping top(node, source, "", std::move(allowed), node.Mark());
   if (const Entry* schema = top.find("brdfnav_material")) {
     check_schema_version(*schema, source);
   } else if (schema_key_required) {
@@ -281,28 +284,32 @@ Material parse_material_yaml(std::string_view text, std::string_view source) {
   if (documents.size() > 1)
     fail(source, documents[1].Mark(), "material",
          "expected one YAML document, got " + std::to_string(documents.size()));
-  return material_from_node(documents.front(), source, true);
+  return material_from_node(documents.front(), source, true, true);
 }
 
 Material read_material_yaml(const std::filesystem::path& path) {
   return parse_material_yaml(read_text(path), path.string());
 }
 
-std::string material_to_yaml(const Material& m) {
+void emit_material(YAML::Emitter& out, const Material& m, bool schema_key) {
   validate(m);
   const ModelInfo& info = model_info(m.model);
-  YAML::Emitter out;
-  out << YAML::BeginMap;
-  out << YAML::Key << "brdfnav_material" << YAML::Value << kMaterialSchemaVersion;
+  if (schema_key) out << YAML::Key << "brdfnav_material" << YAML::Value << kMaterialSchemaVersion;
   out << YAML::Key << "model" << YAML::Value << std::string(info.name);
   out << YAML::Key << "params" << YAML::Value << YAML::Flow << YAML::BeginMap;
   for (std::size_t i = 0; i < info.params.size(); ++i)
-    out << YAML::Key << std::string(info.params[i].name) << YAML::Value << number_text(m.params[i]);
+    out << YAML::Key << std::string(info.params[i].name) << YAML::Value << yaml_number(m.params[i]);
   out << YAML::EndMap;
   emit_rgb(out, "rho_d", m.rho_d);
   emit_rgb(out, "rho_s", m.rho_s);
   // Quoted, so that names YAML would read as something else (null, true, 1.5) stay strings.
   out << YAML::Key << "colorspace" << YAML::Value << YAML::DoubleQuoted << m.colorspace;
+}
+
+std::string material_to_yaml(const Material& m) {
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  emit_material(out, m, true);
   out << YAML::EndMap;
   if (!out.good())
     throw MaterialError("material: cannot be written as YAML: " + out.GetLastError());

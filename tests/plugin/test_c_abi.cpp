@@ -1,9 +1,8 @@
-// libbrdfnav.so as a host sees it: dlopen() the built library, check the ABI version first,
-// resolve every entry point with dlsym() and use nothing but brdfnav.h. Results are compared
-// with the C++ core, linked into this test directly.
-#include <brdfnav/brdfnav.h>
+// libbrdfnav.so as a host sees it (plugin_api.h): nothing but brdfnav.h through dlopen().
+// Results are compared with the C++ core, linked into this test directly.
+#include "plugin_api.h"
+
 #include <brdfnav/core/material.h>
-#include <dlfcn.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -22,44 +21,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-// Every entry point after brdfnav_abi_version, by its name without the brdfnav_ prefix.
-#define BRDFNAV_ENTRY_POINTS(X)                                                                \
-  X(geterror)                                                                                  \
-  X(model_count)                                                                               \
-  X(get_model) X(find_model) X(get_param) X(closure_create) X(closure_load) X(closure_destroy) \
-      X(closure_model) X(closure_colorspace) X(closure_eval) X(closure_sample) X(closure_pdf)
-
-struct Api {
-#define BRDFNAV_DECLARE(name) decltype(&::brdfnav_##name) name = nullptr;
-  BRDFNAV_ENTRY_POINTS(BRDFNAV_DECLARE)
-#undef BRDFNAV_DECLARE
-};
-
-template <typename Function>
-Function resolve(void* library, const char* name) {
-  auto* symbol = reinterpret_cast<Function>(dlsym(library, name));
-  if (!symbol) throw std::runtime_error(std::string("missing symbol ") + name);
-  return symbol;
-}
-
-// Loads the library once per process; throws with the reason when a host would refuse it.
-const Api& api() {
-  static const Api loaded = [] {
-    void* library = dlopen(BRDFNAV_PLUGIN_PATH, RTLD_NOW | RTLD_LOCAL);
-    if (!library) throw std::runtime_error(std::string("dlopen: ") + dlerror());
-    const auto abi_version =
-        resolve<decltype(&::brdfnav_abi_version)>(library, "brdfnav_abi_version");
-    if (abi_version() != BRDFNAV_ABI_VERSION)
-      throw std::runtime_error("ABI version " + std::to_string(abi_version()) + ", expected " +
-                               std::to_string(BRDFNAV_ABI_VERSION));
-    Api a;
-#define BRDFNAV_RESOLVE(name) a.name = resolve<decltype(a.name)>(library, "brdfnav_" #name);
-    BRDFNAV_ENTRY_POINTS(BRDFNAV_RESOLVE)
-#undef BRDFNAV_RESOLVE
-    return a;
-  }();
-  return loaded;
-}
+using test::api;
 
 // Owns a closure created through the ABI.
 struct ClosureHandle {
@@ -76,7 +38,7 @@ Vec3 unit(const double w[3]) {
 class CAbi : public ::testing::Test {
  protected:
   void SetUp() override { ASSERT_NO_THROW(api()); }
-  const Api& c = api();
+  const test::Api& c = api();
 };
 
 TEST_F(CAbi, EnumeratesTheCoreModelTables) {

@@ -1,0 +1,110 @@
+// The neighbour service of the navigation interface (paper, sections 3.3 and 4; issue #5): for a
+// material and a radius eps in the units of the cube-root RMS metric, the variations at embedded
+// distance eps in each tab of the interface, read from a precomputed database
+// (docs/DATABASE.md). The algorithms and their choices are in docs/NAVIGATION.md.
+//
+// A Navigator is immutable once built: any number of threads may query one concurrently; every
+// query allocates its own working memory.
+#pragma once
+
+#include <brdfnav/core/material.h>
+#include <brdfnav/precompute/database.h>
+
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace brdfnav {
+
+// A query the database cannot answer (a model it does not hold, a colour space the colour tabs
+// do not know) or that makes no sense (a radius that is not a positive number, k < 1). The
+// message names the argument.
+class NavigatorError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The tabs of the interface. `gallery` is the start gallery: the most different materials of
+// the database, whatever the current material.
+enum class Tab { lobe, diffuse, specular, models, gallery };
+inline constexpr Tab kTabs[] = {Tab::lobe, Tab::diffuse, Tab::specular, Tab::models, Tab::gallery};
+// "lobe", "diffuse", "specular", "models", "gallery".
+std::string_view tab_name(Tab tab);
+std::optional<Tab> find_tab(std::string_view name);
+
+struct Neighbor {
+  Tab tab;
+  // lobe: "<param>+" / "<param>-" (and Ward's "alpha+" / "alpha-", both slopes by one factor);
+  // diffuse, specular: "L+", "L-", "ab+0", "ab+45", ..., "ab+315"; models, gallery: the model.
+  std::string label;
+  Material material;
+  double distance = 0;  // embedded distance from the current material
+  // The walk reached the end of a parameter's database range before distance eps (lobe and
+  // models tabs): the neighbour is at that end.
+  bool at_boundary = false;
+  // The colour left the valid range (rho_d in [0, 1], rho_s in [0, 10]) before distance eps
+  // (colour tabs): the neighbour is the farthest valid colour in that direction.
+  bool clamped = false;
+};
+
+// A material's best fit by another model (the database's conversion tables, interpolated).
+struct Equivalent {
+  Material material;
+  double residual = 0;  // embedded distance between the material and the fit
+};
+
+struct NavigatorOptions {
+  int threads = 1;             // workers for k-means (the answers do not depend on it)
+  double delta_factor = 0.3;   // models tab: drop neighbours within delta_factor * eps of the
+                               // current model (the paper's delta = 0.3 eps)
+  bool ward_isotropic = true;  // lobe tab of Ward: also "alpha+" / "alpha-"
+};
+
+class Navigator {
+ public:
+  // Database::open(dir) (throws DatabaseError naming the file), then prepares the gallery.
+  static Navigator open(const std::filesystem::path& dir, const NavigatorOptions& options = {});
+  explicit Navigator(Database database, const NavigatorOptions& options = {});
+
+  const Database& database() const { return database_; }
+  const NavigatorOptions& options() const { return options_; }
+
+  // The neighbours of `current` in one tab at embedded distance `radius`. `clusters` is the k of
+  // the models and gallery tabs (at most that many neighbours). Throws NavigatorError, and
+  // MaterialError for an invalid material.
+  std::vector<Neighbor> neighbors(const Material& current, double radius, Tab tab,
+                                  int clusters = 8) const;
+  // `count` maximally different materials over every model (k-means over every grid node, each
+  // with a grey rho_d and the rho_s that puts it at one common distance from matte grey). Each
+  // neighbour's distance is from that matte grey material.
+  std::vector<Neighbor> gallery(int count = 8) const;
+
+  // The embedding of a material (its model must be in the database) and the distance through it.
+  Eigen::VectorXf embed(const Material& m) const;
+  double distance(const Material& a, const Material& b) const;
+  // `m` converted to model `to`: the fit's parameters interpolated over m's grid (in each
+  // parameter's scale), rho_d kept, rho_s scaled by the fit (capped at kRhoSMax).
+  Material convert(const Material& m, ModelId to) const;
+  // The best fit of `m` in every other model of the database, in model order.
+  std::vector<Equivalent> equivalents(const Material& m) const;
+
+ private:
+  const ModelEmbedding& embedding_of(ModelId id) const;
+  std::vector<Neighbor> lobe_tab(const Material& current, double radius) const;
+  std::vector<Neighbor> models_tab(const Material& current, double radius, int clusters) const;
+  std::vector<Neighbor> gallery_tab(const Eigen::VectorXf& from, int count) const;
+  void build_gallery();
+
+  Database database_;
+  NavigatorOptions options_;
+  Material matte_;  // the gallery's reference: grey rho_d, rho_s = 0
+  std::vector<Material> gallery_materials_;
+  Eigen::MatrixXf gallery_embeddings_;  // one column per gallery material
+};
+
+}  // namespace brdfnav

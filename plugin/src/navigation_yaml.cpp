@@ -1,0 +1,99 @@
+#include <brdfnav/io/navigation_yaml.h>
+
+#include <brdfnav/core/atomic_file.h>
+#include <brdfnav/io/material_yaml.h>
+
+#include <yaml-cpp/yaml.h>
+
+namespace brdfnav {
+
+namespace {
+
+constexpr const char* kMetric =
+    "cube-root RMS: sqrt(mean over the covered pixels and the RGB channels of "
+    "(cbrt(a) - cbrt(b))^2) between renderings under the environment, through the database "
+    "embedding";
+
+// `key:` followed by a material mapping without the schema key.
+void emit_material_entry(YAML::Emitter& out, const Material& m) {
+  out << YAML::Key << "material" << YAML::Value << YAML::BeginMap;
+  emit_material(out, m, false);
+  out << YAML::EndMap;
+}
+
+void emit_flags(YAML::Emitter& out, const Neighbor& n) {
+  out << YAML::Key << "flags" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+  if (n.at_boundary) out << "at_boundary";
+  if (n.clamped) out << "clamped";
+  out << YAML::EndSeq;
+}
+
+std::string finish(const YAML::Emitter& out) {
+  if (!out.good())
+    throw MaterialError("navigation: cannot be written as YAML: " + out.GetLastError());
+  return std::string(out.c_str()) + "\n";
+}
+
+void emit_provenance(YAML::Emitter& out, const Database& db) {
+  const Manifest& m = db.manifest();
+  out << YAML::Key << "provenance" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "database" << YAML::Value << YAML::DoubleQuoted << db.dir().string();
+  out << YAML::Key << "manifest_sha1" << YAML::Value << file_sha1(db.dir() / "manifest.yaml");
+  out << YAML::Key << "profile" << YAML::Value << YAML::DoubleQuoted << m.profile;
+  out << YAML::Key << "resolution" << YAML::Value << m.resolution;
+  out << YAML::Key << "scene" << YAML::Value << YAML::DoubleQuoted << m.scene;
+  out << YAML::Key << "environment" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "path" << YAML::Value << YAML::DoubleQuoted << m.env_path;
+  out << YAML::Key << "pixel_sha1" << YAML::Value << m.env_hash;
+  out << YAML::EndMap;
+  out << YAML::Key << "metric" << YAML::Value << YAML::DoubleQuoted << kMetric;
+  out << YAML::EndMap;
+}
+
+}  // namespace
+
+std::string neighbors_to_yaml(const std::vector<Neighbor>& neighbors) {
+  YAML::Emitter out;
+  out << YAML::BeginMap << YAML::Key << "neighbors" << YAML::Value;
+  // An empty list still parses as a list, not as null.
+  if (neighbors.empty()) out << YAML::Flow;
+  out << YAML::BeginSeq;
+  for (const Neighbor& n : neighbors) {
+    out << YAML::BeginMap;
+    out << YAML::Key << "tab" << YAML::Value << std::string(tab_name(n.tab));
+    out << YAML::Key << "label" << YAML::Value << YAML::DoubleQuoted << n.label;
+    out << YAML::Key << "distance" << YAML::Value << yaml_number(n.distance);
+    emit_flags(out, n);
+    emit_material_entry(out, n.material);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndSeq << YAML::EndMap;
+  return finish(out);
+}
+
+std::string export_to_yaml(const Navigator& navigator, const Material& m) {
+  const std::vector<Equivalent> equivalents = navigator.equivalents(m);
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  emit_material(out, m, true);
+  emit_provenance(out, navigator.database());
+  out << YAML::Key << "equivalents" << YAML::Value;
+  if (equivalents.empty()) out << YAML::Flow;
+  out << YAML::BeginMap;
+  for (const Equivalent& e : equivalents) {
+    out << YAML::Key << std::string(model_info(e.material.model).name) << YAML::Value
+        << YAML::BeginMap;
+    out << YAML::Key << "residual" << YAML::Value << yaml_number(e.residual);
+    emit_material_entry(out, e.material);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap << YAML::EndMap;
+  return finish(out);
+}
+
+void write_export(const std::filesystem::path& path, const Navigator& navigator,
+                  const Material& m) {
+  write_file_atomic(path, export_to_yaml(navigator, m));
+}
+
+}  // namespace brdfnav

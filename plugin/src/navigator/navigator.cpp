@@ -1,0 +1,263 @@
+#include <brdfnav/navigator.h>
+
+#include "navigator/colour.h"
+#include "navigator/kmeans.h"
+#include "navigator/walk.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace brdfnav {
+
+namespace {
+
+// The start gallery's materials: grey rho_d, and the rho_s that puts each node at the median
+// distance from matte grey that the nodes have at rho_s = kGalleryReferenceRhoS. A common
+// distance keeps a dim lobe (Cook-Torrance at f0 = 0.01) from looking like matte grey and a
+// bright one from standing out by brightness alone: the clusters then differ by lobe shape.
+constexpr double kGalleryRhoD = 0.1;
+constexpr double kGalleryReferenceRhoS = 0.1;
+
+std::string model_name(ModelId id) {
+  return std::string(model_info(id).name);
+}
+
+Neighbor neighbor_of(Tab tab, std::string label, const nav::Hit& hit, double distance) {
+  Neighbor n{tab, std::move(label), hit.material, distance};
+  (tab == Tab::diffuse || tab == Tab::specular ? n.clamped : n.at_boundary) = !hit.reached;
+  return n;
+}
+
+// Every path of one tab walked to the sphere around the current material (the paths' origin).
+std::vector<Neighbor> walk_all(Tab tab, const std::vector<nav::Path>& paths,
+                               const ModelEmbedding& embedding, const Material& current,
+                               double radius) {
+  const Eigen::VectorXf centre = embedding.embed(current);
+  std::vector<Neighbor> out;
+  for (const nav::Path& path : paths) {
+    const nav::Hit hit = nav::walk_to_sphere(embedding, centre, radius, path);
+    out.push_back(neighbor_of(tab, path.label, hit, hit.distance));
+  }
+  return out;
+}
+
+void check_query(double radius, int clusters) {
+  if (!(std::isfinite(radius) && radius > 0))
+    throw NavigatorError("radius: must be a positive finite distance, got " +
+                         std::to_string(radius));
+  if (clusters < 1)
+    throw NavigatorError("clusters: must be at least 1, got " + std::to_string(clusters));
+}
+
+// A material of `model` at the gallery's grey with rho_s = `rho_s`.
+Material grey(Material m, double rho_s) {
+  m.rho_d = Rgb::Constant(kGalleryRhoD);
+  m.rho_s = Rgb::Constant(rho_s);
+  return m;
+}
+
+}  // namespace
+
+std::string_view tab_name(Tab tab) {
+  switch (tab) {
+    case Tab::lobe:
+      return "lobe";
+    case Tab::diffuse:
+      return "diffuse";
+    case Tab::specular:
+      return "specular";
+    case Tab::models:
+      return "models";
+    case Tab::gallery:
+      return "gallery";
+  }
+  return "?";
+}
+
+std::optional<Tab> find_tab(std::string_view name) {
+  for (Tab tab : kTabs)
+    if (tab_name(tab) == name) return tab;
+  return std::nullopt;
+}
+
+Navigator Navigator::open(const std::filesystem::path& dir, const NavigatorOptions& options) {
+  return Navigator(Database::open(dir), options);
+}
+
+Navigator::Navigator(Database database, const NavigatorOptions& options)
+    : database_(std::move(database)), options_(options) {
+  if (options_.threads < 1)
+    throw NavigatorError("threads: must be at least 1, got " + std::to_string(options_.threads));
+  if (!(options_.delta_factor >= 0)) throw NavigatorError("delta_factor: must be non-negative");
+  if (database_.manifest().grids.empty())
+    throw NavigatorError(database_.dir().string() + ": the database holds no model");
+  build_gallery();
+}
+
+const ModelEmbedding& Navigator::embedding_of(ModelId id) const {
+  if (const ModelEmbedding* e = database_.embedding(id)) return *e;
+  throw NavigatorError("material: model '" + model_name(id) + "' is not in the database " +
+                       database_.dir().string());
+}
+
+Eigen::VectorXf Navigator::embed(const Material& m) const {
+  return embedding_of(m.model).embed(m);
+}
+
+double Navigator::distance(const Material& a, const Material& b) const {
+  return Embedding::distance(embed(a), embed(b));
+}
+
+Material Navigator::convert(const Material& m, ModelId to) const {
+  if (to == m.model) return m;
+  const ConversionTable* table = database_.conversion(m.model, to);
+  if (!table)
+    throw NavigatorError("no conversion from '" + model_name(m.model) + "' to '" + model_name(to) +
+                         "' in the database " + database_.dir().string());
+  const std::span<const ParamSpec> specs = model_info(to).params;
+  std::vector<double> scaled(specs.size(), 0.0);
+  Rgb scale = Rgb::Zero();
+  for (const ParamGrid::Corner& k : embedding_of(m.model).grid().corners(m.params)) {
+    const Conversion& fit = table->nodes[k.node];
+    for (std::size_t j = 0; j < specs.size(); ++j)
+      scaled[j] += k.weight * to_scale(specs[j], fit.params[j]);
+    scale += k.weight * fit.scale;
+  }
+  // Kept inside the database's grid of `to`: the fits may range wider (the parameter tables'
+  // grids), but beyond the grid the embedding cannot tell images apart.
+  const ParamGrid& grid = embedding_of(to).grid();
+  Material out = default_material(to);
+  for (std::size_t j = 0; j < specs.size(); ++j)
+    out.params[j] =
+        std::clamp(from_scale(specs[j], scaled[j]), grid.axis(j).front(), grid.axis(j).back());
+  out.rho_d = m.rho_d;
+  out.rho_s = (m.rho_s * scale).max(0.0).min(kRhoSMax);
+  out.colorspace = m.colorspace;
+  validate(out);
+  return out;
+}
+
+std::vector<Equivalent> Navigator::equivalents(const Material& m) const {
+  validate(m);
+  std::vector<Equivalent> out;
+  for (const ProfileGrid& g : database_.manifest().grids) {
+    if (g.model == m.model || !database_.conversion(m.model, g.model)) continue;
+    Material fit = convert(m, g.model);
+    const double residual = distance(m, fit);
+    out.push_back({std::move(fit), residual});
+  }
+  return out;
+}
+
+std::vector<Neighbor> Navigator::neighbors(const Material& current, double radius, Tab tab,
+                                           int clusters) const {
+  validate(current);
+  check_query(radius, clusters);
+  const ModelEmbedding& embedding = embedding_of(current.model);
+  switch (tab) {
+    case Tab::lobe:
+      return lobe_tab(current, radius);
+    case Tab::diffuse:
+    case Tab::specular:
+      if (current.colorspace != kDefaultColorspace)
+        throw NavigatorError("material: colorspace '" + current.colorspace +
+                             "': the colour tabs work in CIELAB from " +
+                             std::string(kDefaultColorspace) + " only");
+      return walk_all(tab,
+                      nav::colour_paths(current, tab == Tab::diffuse ? nav::ColourTerm::diffuse
+                                                                     : nav::ColourTerm::specular),
+                      embedding, current, radius);
+    case Tab::models:
+      return models_tab(current, radius, clusters);
+    case Tab::gallery:
+      return gallery_tab(embedding.embed(current), clusters);
+  }
+  throw NavigatorError("tab: unknown tab");
+}
+
+std::vector<Neighbor> Navigator::gallery(int count) const {
+  check_query(1, count);
+  return gallery_tab(embed(matte_), count);
+}
+
+std::vector<Neighbor> Navigator::lobe_tab(const Material& current, double radius) const {
+  const ModelEmbedding& embedding = embedding_of(current.model);
+  return walk_all(Tab::lobe, nav::lobe_paths(current, embedding.grid(), options_.ward_isotropic),
+                  embedding, current, radius);
+}
+
+// Paper, section 4: from the current material's best fit A' in every other model, that model's
+// equidistant neighbours around A' (the sphere is centred at A', as in the paper, so the walk
+// starts inside it however good the fit); then drop those within delta of their own best fit
+// in the current model, and keep one per k-means cluster.
+std::vector<Neighbor> Navigator::models_tab(const Material& current, double radius,
+                                            int clusters) const {
+  const Eigen::VectorXf from = embed(current);
+  std::vector<Neighbor> candidates;
+  std::vector<Eigen::VectorXf> points;
+  for (const ProfileGrid& g : database_.manifest().grids) {
+    if (g.model == current.model || !database_.conversion(current.model, g.model) ||
+        !database_.conversion(g.model, current.model))
+      continue;
+    const ModelEmbedding& embedding = embedding_of(g.model);
+    const Material fit = convert(current, g.model);
+    const Eigen::VectorXf centre = embedding.embed(fit);
+    for (const nav::Path& path : nav::lobe_paths(fit, embedding.grid(), options_.ward_isotropic)) {
+      const nav::Hit hit = nav::walk_to_sphere(embedding, centre, radius, path);
+      Eigen::VectorXf x = embedding.embed(hit.material);
+      const Eigen::VectorXf back = embed(convert(hit.material, current.model));
+      if (Embedding::distance(x, back) < options_.delta_factor * radius) continue;
+      candidates.push_back(
+          neighbor_of(Tab::models, model_name(g.model), hit, Embedding::distance(x, from)));
+      points.push_back(std::move(x));
+    }
+  }
+  if (candidates.empty()) return {};
+  Eigen::MatrixXf matrix(from.size(), static_cast<Eigen::Index>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i)
+    matrix.col(static_cast<Eigen::Index>(i)) = points[i];
+  std::vector<Neighbor> out;
+  for (std::size_t i : nav::kmeans_representatives(matrix, {clusters, options_.threads}))
+    out.push_back(std::move(candidates[i]));
+  return out;
+}
+
+std::vector<Neighbor> Navigator::gallery_tab(const Eigen::VectorXf& from, int count) const {
+  std::vector<Neighbor> out;
+  for (std::size_t i :
+       nav::kmeans_representatives(gallery_embeddings_, {count, options_.threads})) {
+    const Material& m = gallery_materials_[i];
+    const auto x = gallery_embeddings_.col(static_cast<Eigen::Index>(i));
+    out.push_back({Tab::gallery, model_name(m.model), m, static_cast<double>((x - from).norm())});
+  }
+  return out;
+}
+
+void Navigator::build_gallery() {
+  matte_ = grey(default_material(database_.manifest().grids.front().model), 0.0);
+  const Eigen::VectorXf matte = embed(matte_);
+  std::vector<Material> nodes;
+  std::vector<double> reference;
+  for (const ProfileGrid& g : database_.manifest().grids) {
+    for (std::size_t n = 0; n < g.grid.node_count(); ++n) {
+      Material m = default_material(g.model);
+      m.params = g.grid.node_values(n);
+      nodes.push_back(grey(m, 0.0));
+      reference.push_back(distance(grey(m, kGalleryReferenceRhoS), matte_));
+    }
+  }
+  std::nth_element(reference.begin(), reference.begin() + reference.size() / 2, reference.end());
+  const double common = reference[reference.size() / 2];
+
+  gallery_embeddings_.resize(matte.size(), static_cast<Eigen::Index>(nodes.size()));
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    // rho_s from 0 (matte) up to kRhoSMax, walked to the common distance.
+    const Material node = nodes[i];
+    const nav::Path path{"", [node](double s) { return grey(node, s); }, {0.0, kRhoSMax}};
+    const nav::Hit hit = nav::walk_to_sphere(embedding_of(node.model), matte, common, path);
+    gallery_materials_.push_back(hit.material);
+    gallery_embeddings_.col(static_cast<Eigen::Index>(i)) = embed(hit.material);
+  }
+}
+
+}  // namespace brdfnav

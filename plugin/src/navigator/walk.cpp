@@ -1,0 +1,118 @@
+#include "navigator/walk.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace brdfnav::nav {
+
+namespace {
+
+// Halvings of a segment: far below float resolution of the embedding, and a fixed count keeps
+// the answer independent of anything but the inputs.
+constexpr int kBisections = 64;
+
+// One parameter a lobe path moves, in the parameter's own scale (log or linear).
+struct MovingAxis {
+  std::size_t index;
+  ParamSpec spec;
+  double front, back;              // the grid's ends, in scale units
+  double front_value, back_value;  // ... and as values, to land on them exactly
+  double start;                    // the current value in scale units, clamped to the grid
+};
+
+MovingAxis moving_axis(const Material& m, const ParamGrid& grid, std::size_t index) {
+  const ParamSpec& spec = grid.specs()[index];
+  const std::vector<double>& nodes = grid.axis(index);
+  MovingAxis a{index,
+               spec,
+               to_scale(spec, nodes.front()),
+               to_scale(spec, nodes.back()),
+               nodes.front(),
+               nodes.back(),
+               0.0};
+  // Outside the grid the embedding is clamped (flat): the walk starts where it ends.
+  a.start = std::clamp(to_scale(spec, m.params[index]), a.front, a.back);
+  return a;
+}
+
+// The value of axis `a` after moving `step` scale units; grid ends are hit exactly.
+double moved_value(const MovingAxis& a, double step) {
+  const double x = a.start + step;
+  const double tolerance = 1e-12 * (std::abs(a.back - a.front) + 1);
+  if (x >= a.back - tolerance) return a.back_value;
+  if (x <= a.front + tolerance) return a.front_value;
+  return from_scale(a.spec, x);
+}
+
+// Moves every axis of `indices` by sign * s scale units together, up to the first grid end.
+Path scale_path(const Material& m, const ParamGrid& grid, const std::vector<std::size_t>& indices,
+                double sign, std::string label) {
+  std::vector<MovingAxis> axes;
+  double end = std::numeric_limits<double>::infinity();
+  std::vector<double> breaks;
+  for (std::size_t index : indices) {
+    const MovingAxis a = moving_axis(m, grid, index);
+    end = std::min(end, sign > 0 ? a.back - a.start : a.start - a.front);
+    // Every grid node ahead is a cell boundary of the path.
+    for (double node : grid.axis(index))
+      breaks.push_back(sign * (to_scale(a.spec, node) - a.start));
+    axes.push_back(a);
+  }
+  end = std::max(end, 0.0);
+  std::erase_if(breaks, [&](double s) { return !(s > 0 && s < end); });
+  breaks.push_back(0.0);
+  breaks.push_back(end);
+  std::sort(breaks.begin(), breaks.end());
+  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+
+  auto material = [m, axes, sign](double s) {
+    Material out = m;
+    if (s <= 0) return out;  // exactly the current material, even when it lies off the grid
+    for (const MovingAxis& a : axes) out.params[a.index] = moved_value(a, sign * s);
+    return out;
+  };
+  return {std::move(label), std::move(material), std::move(breaks)};
+}
+
+}  // namespace
+
+Hit walk_to_sphere(const ModelEmbedding& embedding, const Eigen::VectorXf& centre, double radius,
+                   const Path& path) {
+  const auto distance = [&](double s) {
+    return Embedding::distance(embedding.embed(path.material(s)), centre);
+  };
+  for (std::size_t i = 1; i < path.breaks.size(); ++i) {
+    double lo = path.breaks[i - 1], hi = path.breaks[i];
+    double hi_distance = distance(hi);
+    if (hi_distance < radius) continue;
+    for (int k = 0; k < kBisections; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid <= lo || mid >= hi) break;
+      const double d = distance(mid);
+      if (d < radius) {
+        lo = mid;
+      } else {
+        hi = mid, hi_distance = d;
+      }
+    }
+    return {path.material(hi), hi_distance, true};
+  }
+  const double end = path.breaks.back();
+  return {path.material(end), distance(end), false};
+}
+
+std::vector<Path> lobe_paths(const Material& m, const ParamGrid& grid, bool ward_isotropic) {
+  std::vector<Path> paths;
+  for (std::size_t d = 0; d < grid.dimensions(); ++d) {
+    const std::string name(grid.specs()[d].name);
+    paths.push_back(scale_path(m, grid, {d}, +1, name + "+"));
+    paths.push_back(scale_path(m, grid, {d}, -1, name + "-"));
+  }
+  if (ward_isotropic && m.model == ModelId::ward) {
+    paths.push_back(scale_path(m, grid, {0, 1}, +1, "alpha+"));
+    paths.push_back(scale_path(m, grid, {0, 1}, -1, "alpha-"));
+  }
+  return paths;
+}
+
+}  // namespace brdfnav::nav

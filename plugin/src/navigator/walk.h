@@ -1,0 +1,44 @@
+// Finding the point at distance eps along a path of materials (paper, Figure 5): the one search
+// behind every tab of the navigator.
+#pragma once
+
+#include <brdfnav/core/grid.h>
+#include <brdfnav/core/material.h>
+#include <brdfnav/precompute/embedding.h>
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace brdfnav::nav {
+
+// Materials of one model along s in [0, breaks.back()], starting at the current one (s = 0).
+// Between consecutive breaks the path stays inside one cell of the database grid (or one slice
+// of a colour ray), where the embedding is smooth.
+struct Path {
+  std::string label;
+  std::function<Material(double s)> material;
+  std::vector<double> breaks;  // increasing, breaks.front() == 0
+};
+
+struct Hit {
+  Material material;
+  double distance;  // embedded, from the centre
+  bool reached;     // false: the whole path stays inside the sphere, `material` is its end
+};
+
+// Walks `path` segment by segment and bisects, on the embedded distance, inside the first
+// segment whose end is at least `radius` from `centre`. Exact for one parameter: its embedding
+// is linear inside a grid cell, so the squared distance is convex there and a crossing shows at
+// the segment's end.
+Hit walk_to_sphere(const ModelEmbedding& embedding, const Eigen::VectorXf& centre, double radius,
+                   const Path& path);
+
+// The iso-parameter paths from `m` through `grid`: every parameter up ("<name>+") and down
+// ("<name>-"), each in its own scale (log or linear), to the end of the grid. With
+// `ward_isotropic`, Ward also gets "alpha+" / "alpha-": both slopes scaled by one factor.
+std::vector<Path> lobe_paths(const Material& m, const ParamGrid& grid, bool ward_isotropic);
+
+}  // namespace brdfnav::nav

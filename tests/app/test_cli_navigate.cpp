@@ -1,0 +1,139 @@
+// `brdfnav neighbors` and `brdfnav export` end to end, on a test-profile database the suite
+// builds once with `brdfnav precompute` (the suite is registered WHOLE).
+#include "app/cli_runner.h"
+
+#include <brdfnav/core/material.h>
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <unistd.h>
+
+#include <set>
+
+namespace brdfnav::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class CliNavigate : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = fs::temp_directory_path() / ("brdfnav_cli_navigate_" + std::to_string(::getpid()));
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+    const CliResult r = run_cli("precompute --profile test --out " + db().string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  static void TearDownTestSuite() { fs::remove_all(root_); }
+  static fs::path db() { return root_ / "db"; }
+  static fs::path file(const std::string& name) { return root_ / name; }
+  static CliResult neighbors(const std::string& args) {
+    return run_cli("neighbors --db " + db().string() + " " + args);
+  }
+
+  static inline fs::path root_;
+};
+
+// Every item has the stable keys; its material reads back through the CLI (`eval`).
+TEST_F(CliNavigate, NeighborsPrintsOneYamlListWithTheStableKeys) {
+  const CliResult r =
+      neighbors("--material ward:alpha_x=0.1,alpha_y=0.05,rho_s=0.4 --radius 0.02 --k 4");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<YAML::Node> docs = YAML::LoadAll(r.out);
+  ASSERT_EQ(docs.size(), 1u);
+  const YAML::Node list = docs[0]["neighbors"];
+  ASSERT_TRUE(list.IsSequence());
+  std::set<std::string> tabs;
+  for (const YAML::Node& item : list) {
+    std::set<std::string> keys;
+    for (const auto& kv : item) keys.insert(kv.first.as<std::string>());
+    EXPECT_EQ(keys, (std::set<std::string>{"tab", "label", "distance", "flags", "material"}));
+    tabs.insert(item["tab"].as<std::string>());
+    EXPECT_GT(item["distance"].as<double>(), 0);
+    EXPECT_TRUE(item["flags"].IsSequence());
+    std::set<std::string> material_keys;
+    for (const auto& kv : item["material"]) material_keys.insert(kv.first.as<std::string>());
+    EXPECT_EQ(material_keys,
+              (std::set<std::string>{"model", "params", "rho_d", "rho_s", "colorspace"}));
+  }
+  EXPECT_EQ(tabs, (std::set<std::string>{"lobe", "diffuse", "specular", "models", "gallery"}));
+  EXPECT_EQ(list[0]["label"].as<std::string>(), "alpha_x+");
+
+  const CliResult lobe =
+      neighbors("--material ward:alpha_x=0.1,alpha_y=0.05 --radius 0.01 --tab lobe");
+  ASSERT_EQ(lobe.exit_code, 0) << lobe.err;
+  const YAML::Node only = YAML::Load(lobe.out)["neighbors"];
+  ASSERT_EQ(only.size(), 6u);
+  for (const YAML::Node& item : only) EXPECT_EQ(item["tab"].as<std::string>(), "lobe");
+}
+
+// The export is a material file: neighbors and eval take it as --material.
+TEST_F(CliNavigate, ExportRoundTripsAsAMaterial) {
+  const std::string spec = "he:sigma=0.3,tau=9,eta=2,rho_d=0.1/0.2/0.3,rho_s=0.7";
+  const fs::path chosen = file("chosen.yaml");
+  CliResult r =
+      run_cli("export --db " + db().string() + " --material " + spec + " --out " + chosen.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const YAML::Node doc = YAML::LoadFile(chosen.string());
+  EXPECT_EQ(doc["brdfnav_material"].as<int>(), 1);
+  EXPECT_EQ(doc["model"].as<std::string>(), "he");
+  EXPECT_EQ(doc["provenance"]["manifest_sha1"].as<std::string>().size(), 40u);
+  EXPECT_FALSE(doc["provenance"]["environment"]["path"].as<std::string>().empty());
+  EXPECT_EQ(doc["equivalents"].size(), 4u);
+  for (const auto& kv : doc["equivalents"]) EXPECT_GE(kv.second["residual"].as<double>(), 0);
+
+  const std::string args = " --radius 0.01 --tab lobe";
+  const CliResult from_file = neighbors("--material " + chosen.string() + args);
+  const CliResult from_spec = neighbors("--material " + spec + args);
+  ASSERT_EQ(from_file.exit_code, 0) << from_file.err;
+  EXPECT_EQ(from_file.out, from_spec.out);
+  const std::string wi = " --wi 0,0.3,1 --wo 0.2,0,1";
+  r = run_cli("eval --material " + chosen.string() + wi);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, run_cli("eval --material " + spec + wi).out);
+}
+
+// One error line naming the option, key or file; non-zero exit; nothing written.
+TEST_F(CliNavigate, RejectsBadInputNamingIt) {
+  const std::string ok = "--material ward --radius 0.01";
+  const struct {
+    std::string args, message;
+  } cases[] = {
+      {"--material ward --radius 0.01 --tab sideways", "--tab"},
+      {"--material ward --radius nan", "--radius"},
+      {"--material ward --radius -0.1", "--radius"},
+      {"--material ward --radius 0", "--radius"},
+      {"--material ward --radius 0.01 --k 0", "--k"},
+      {"--material ward:alpha_x=7 --radius 0.01", "params.alpha_x"},
+      {"--material missing.yaml --radius 0.01", "missing.yaml"},
+      {"--material ward:colorspace=acescg --radius 0.01 --tab diffuse", "colorspace 'acescg'"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.args);
+    const CliResult r = neighbors(c.args);
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
+  CliResult r = run_cli("neighbors --db " + file("nodb").string() + " " + ok);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("--db: " + file("nodb").string() + "/manifest.yaml"), std::string::npos)
+      << r.err;
+
+  const fs::path out = file("never.yaml");
+  r = run_cli("export --db " + file("nodb").string() + " --material ward --out " + out.string());
+  EXPECT_NE(r.exit_code, 0);
+  r = run_cli("export --db " + db().string() + " --material ward:n=3 --out " + out.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("--material"), std::string::npos) << r.err;
+  r = run_cli("export --db " + db().string() + " --material ward --out " +
+              (root_ / "no_such_dir" / "x.yaml").string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("no_such_dir"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  for (const auto& e : fs::directory_iterator(root_))
+    EXPECT_EQ(e.path().filename().string().find("never"), std::string::npos) << e.path();
+}
+
+}  // namespace
+}  // namespace brdfnav::test

@@ -1,0 +1,177 @@
+// The navigator through the C ABI of a dlopen()ed libbrdfnav.so (plugin_api.h), against the C++
+// navigator linked into this test: the same neighbours, the ABI's statuses and messages.
+#include "navigator_fixture.h"
+#include "plugin_api.h"
+
+#include <brdfnav/navigator.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+namespace brdfnav {
+namespace {
+
+using test::api;
+using ::testing::HasSubstr;
+
+struct NavigatorHandle {
+  brdfnav_navigator* navigator = nullptr;
+  ~NavigatorHandle() { api().navigator_close(navigator); }
+};
+struct ListHandle {
+  brdfnav_neighbors* list = nullptr;
+  ~ListHandle() { api().neighbors_free(list); }
+};
+
+class CAbiNavigator : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_NO_THROW(api());
+    ASSERT_EQ(c.navigator_open(db().c_str(), &nav.navigator), BRDFNAV_OK) << c.geterror();
+  }
+  static const std::filesystem::path& db() { return test::NavigationDatabase::get().dir(); }
+  static const Navigator& reference() {
+    static const Navigator n = Navigator::open(db());
+    return n;
+  }
+  const test::Api& c = api();
+  NavigatorHandle nav;
+};
+
+// Every neighbour of a C list equals the C++ navigator's.
+void expect_list(const brdfnav_neighbors* list, const std::vector<Neighbor>& expected) {
+  const test::Api& c = api();
+  size_t count = 0;
+  ASSERT_EQ(c.neighbors_count(list, &count), BRDFNAV_OK);
+  ASSERT_EQ(count, expected.size());
+  for (size_t i = 0; i < count; ++i) {
+    brdfnav_neighbor n;
+    ASSERT_EQ(c.neighbors_get(list, i, &n), BRDFNAV_OK);
+    const Neighbor& e = expected[i];
+    EXPECT_EQ(n.tab, static_cast<brdfnav_tab>(e.tab));
+    EXPECT_EQ(n.label, e.label);
+    EXPECT_EQ(n.distance, e.distance);
+    EXPECT_EQ(n.flags, (e.at_boundary ? BRDFNAV_NEIGHBOR_AT_BOUNDARY : 0u) |
+                           (e.clamped ? BRDFNAV_NEIGHBOR_CLAMPED : 0u));
+    const ModelInfo& info = model_info(e.material.model);
+    EXPECT_EQ(n.material.model, info.name);
+    ASSERT_EQ(n.material.param_count, info.params.size());
+    for (size_t p = 0; p < n.material.param_count; ++p) {
+      EXPECT_EQ(n.material.params[p].name, info.params[p].name);
+      EXPECT_EQ(n.material.params[p].value, e.material.params[p]);
+    }
+    for (int ch = 0; ch < 3; ++ch) {
+      EXPECT_EQ(n.material.rho_d[ch], e.material.rho_d[ch]);
+      EXPECT_EQ(n.material.rho_s[ch], e.material.rho_s[ch]);
+    }
+    EXPECT_EQ(n.material.colorspace, e.material.colorspace);
+    // The neighbour is a material the ABI takes back.
+    brdfnav_closure* closure = nullptr;
+    EXPECT_EQ(c.closure_create(&n.material, &closure), BRDFNAV_OK) << c.geterror();
+    c.closure_destroy(closure);
+  }
+}
+
+TEST_F(CAbiNavigator, ListsTheCppNeighboursOfEveryTab) {
+  const char* spec = "cook_torrance:f0=0.2,m=0.1,rho_d=0.1/0.2/0.3,rho_s=0.6";
+  const brdfnav_param_value params[] = {{"m", 0.1}, {"f0", 0.2}};
+  const brdfnav_material current{"cook_torrance", params,          2,
+                                 {0.1, 0.2, 0.3}, {0.6, 0.6, 0.6}, nullptr};
+  for (Tab tab : kTabs) {
+    SCOPED_TRACE(std::string(tab_name(tab)));
+    const auto expected = reference().neighbors(parse_material_spec(spec), 0.02, tab, 5);
+    ListHandle from_struct, from_spec;
+    ASSERT_EQ(c.navigator_neighbors(nav.navigator, &current, 0.02, static_cast<brdfnav_tab>(tab), 5,
+                                    &from_struct.list),
+              BRDFNAV_OK)
+        << c.geterror();
+    expect_list(from_struct.list, expected);
+    ASSERT_EQ(c.navigator_neighbors_load(nav.navigator, spec, 0.02, static_cast<brdfnav_tab>(tab),
+                                         5, &from_spec.list),
+              BRDFNAV_OK)
+        << c.geterror();
+    expect_list(from_spec.list, expected);
+  }
+  ListHandle gallery;
+  ASSERT_EQ(c.navigator_gallery(nav.navigator, 6, &gallery.list), BRDFNAV_OK) << c.geterror();
+  expect_list(gallery.list, reference().gallery(6));
+}
+
+// A list outlives its navigator: it owns every string and array it hands out.
+TEST_F(CAbiNavigator, ListsOutliveTheirNavigator) {
+  ListHandle list;
+  ASSERT_EQ(c.navigator_neighbors_load(nav.navigator, "ward:alpha_x=0.1,alpha_y=0.03,rho_s=0.5",
+                                       0.01, BRDFNAV_TAB_LOBE, 8, &list.list),
+            BRDFNAV_OK);
+  c.navigator_close(nav.navigator);
+  nav.navigator = nullptr;
+  brdfnav_neighbor n;
+  ASSERT_EQ(c.neighbors_get(list.list, 5, &n), BRDFNAV_OK);
+  EXPECT_STREQ(n.label, "alpha-");
+  EXPECT_STREQ(n.material.model, "ward");
+  EXPECT_STREQ(n.material.colorspace, "lin_rec709");
+}
+
+TEST_F(CAbiNavigator, ReportsBadQueriesWithStatusAndMessage) {
+  const auto expect_failure = [&](brdfnav_status status, brdfnav_status expected,
+                                  const std::string& message) {
+    EXPECT_EQ(status, expected) << message;
+    EXPECT_THAT(c.geterror(), HasSubstr(message));
+  };
+  brdfnav_navigator* none = reinterpret_cast<brdfnav_navigator*>(&none);
+  expect_failure(c.navigator_open("/nonexistent/db", &none), BRDFNAV_ERROR_DATABASE,
+                 "/nonexistent/db/manifest.yaml");
+  EXPECT_EQ(none, nullptr);
+  expect_failure(c.navigator_open(nullptr, &none), BRDFNAV_ERROR_INVALID_ARGUMENT, "database_dir");
+
+  const brdfnav_material ward{"ward", nullptr, 0, {0.2, 0.2, 0.2}, {0.3, 0.3, 0.3}, nullptr};
+  brdfnav_neighbors* list = reinterpret_cast<brdfnav_neighbors*>(&list);
+  for (double radius : {0.0, -1.0, double(NAN), double(INFINITY)})
+    expect_failure(c.navigator_neighbors(nav.navigator, &ward, radius, BRDFNAV_TAB_LOBE, 8, &list),
+                   BRDFNAV_ERROR_INVALID_ARGUMENT, "radius");
+  EXPECT_EQ(list, nullptr);
+  expect_failure(
+      c.navigator_neighbors(nav.navigator, &ward, 0.01, static_cast<brdfnav_tab>(9), 8, &list),
+      BRDFNAV_ERROR_INVALID_ARGUMENT, "tab 9");
+  expect_failure(c.navigator_neighbors(nav.navigator, &ward, 0.01, BRDFNAV_TAB_MODELS, 0, &list),
+                 BRDFNAV_ERROR_INVALID_ARGUMENT, "clusters");
+  expect_failure(c.navigator_neighbors(nullptr, &ward, 0.01, BRDFNAV_TAB_LOBE, 8, &list),
+                 BRDFNAV_ERROR_INVALID_ARGUMENT, "navigator");
+  expect_failure(c.navigator_neighbors(nav.navigator, nullptr, 0.01, BRDFNAV_TAB_LOBE, 8, &list),
+                 BRDFNAV_ERROR_INVALID_ARGUMENT, "current");
+  expect_failure(c.navigator_neighbors(nav.navigator, &ward, 0.01, BRDFNAV_TAB_LOBE, 8, nullptr),
+                 BRDFNAV_ERROR_INVALID_ARGUMENT, "out");
+  const brdfnav_material acescg{"ward", nullptr, 0, {0.2, 0.2, 0.2}, {0.3, 0.3, 0.3}, "acescg"};
+  expect_failure(c.navigator_neighbors(nav.navigator, &acescg, 0.01, BRDFNAV_TAB_DIFFUSE, 8, &list),
+                 BRDFNAV_ERROR_INVALID_ARGUMENT, "colorspace 'acescg'");
+  expect_failure(
+      c.navigator_neighbors_load(nav.navigator, "ward:alpha_x=3", 0.01, BRDFNAV_TAB_LOBE, 8, &list),
+      BRDFNAV_ERROR_PARSE, "params.alpha_x");
+  expect_failure(c.navigator_neighbors_load(nav.navigator, "/nonexistent/m.yaml", 0.01,
+                                            BRDFNAV_TAB_LOBE, 8, &list),
+                 BRDFNAV_ERROR_IO, "/nonexistent/m.yaml");
+  expect_failure(c.navigator_gallery(nav.navigator, 0, &list), BRDFNAV_ERROR_INVALID_ARGUMENT,
+                 "clusters");
+  EXPECT_EQ(list, nullptr);
+
+  ListHandle ok;
+  ASSERT_EQ(c.navigator_gallery(nav.navigator, 2, &ok.list), BRDFNAV_OK);
+  size_t count = 7;
+  brdfnav_neighbor n{};
+  n.distance = -7;
+  expect_failure(c.neighbors_get(ok.list, 2, &n), BRDFNAV_ERROR_INVALID_ARGUMENT,
+                 "neighbour index 2");
+  EXPECT_EQ(n.distance, -7);
+  expect_failure(c.neighbors_get(nullptr, 0, &n), BRDFNAV_ERROR_INVALID_ARGUMENT, "list");
+  expect_failure(c.neighbors_get(ok.list, 0, nullptr), BRDFNAV_ERROR_INVALID_ARGUMENT, "out");
+  expect_failure(c.neighbors_count(nullptr, &count), BRDFNAV_ERROR_INVALID_ARGUMENT, "list");
+  expect_failure(c.neighbors_count(ok.list, nullptr), BRDFNAV_ERROR_INVALID_ARGUMENT, "count");
+  EXPECT_EQ(count, 7u);
+  c.neighbors_free(nullptr);
+  c.navigator_close(nullptr);
+}
+
+}  // namespace
+}  // namespace brdfnav

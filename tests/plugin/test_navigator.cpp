@@ -1,0 +1,417 @@
+// The neighbour service through its C++ API, on a test-profile database: every tab's neighbours
+// are where the paper puts them (checked through the embedding, independently of the walk), the
+// clustering is deterministic, concurrent queries agree with serial ones, and the YAML documents
+// read back.
+#include "navigator_fixture.h"
+
+#include <brdfnav/io/material_yaml.h>
+#include <brdfnav/io/navigation_yaml.h>
+#include <brdfnav/navigator.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include "navigator/colour.h"
+
+#include <cmath>
+#include <set>
+#include <thread>
+
+namespace brdfnav {
+namespace {
+
+using test::random_material;
+using ::testing::HasSubstr;
+
+const Navigator& navigator() {
+  static const Navigator nav = Navigator::open(test::NavigationDatabase::get().dir());
+  return nav;
+}
+
+const ParamGrid& grid_of(ModelId id) {
+  return navigator().database().embedding(id)->grid();
+}
+
+// A few random materials of every model, with the radii to query them at.
+struct Case {
+  Material material;
+  double radius;
+};
+std::vector<Case> cases(int per_model, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<Case> out;
+  for (const ModelInfo& info : models())
+    for (int i = 0; i < per_model; ++i)
+      for (double radius : {0.005, 0.02})
+        out.push_back({random_material(info.id, grid_of(info.id), rng), radius});
+  return out;
+}
+
+std::string describe(const Case& c) {
+  return format_material_spec(c.material) + " eps " + std::to_string(c.radius);
+}
+
+bool same(const Material& a, const Material& b) {
+  return a.model == b.model && a.params == b.params && (a.rho_d == b.rho_d).all() &&
+         (a.rho_s == b.rho_s).all() && a.colorspace == b.colorspace;
+}
+
+void expect_same(const std::vector<Neighbor>& a, const std::vector<Neighbor>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].tab, b[i].tab);
+    EXPECT_EQ(a[i].label, b[i].label);
+    EXPECT_EQ(a[i].distance, b[i].distance);
+    EXPECT_EQ(a[i].at_boundary, b[i].at_boundary);
+    EXPECT_EQ(a[i].clamped, b[i].clamped);
+    EXPECT_TRUE(same(a[i].material, b[i].material)) << a[i].label;
+  }
+}
+
+// The neighbour is at eps (recomputed through the embedding) unless the walk stopped early, and
+// then it is inside the sphere.
+void expect_on_sphere(const Case& c, const Neighbor& n, bool stopped) {
+  const double d = navigator().distance(c.material, n.material);
+  EXPECT_NEAR(d, n.distance, 1e-6 * c.radius) << n.label;
+  if (stopped) {
+    EXPECT_LE(d, c.radius * (1 + 1e-3)) << n.label;
+  } else {
+    EXPECT_NEAR(d, c.radius, 1e-3 * c.radius) << n.label;
+  }
+}
+
+TEST(Navigator, LobeNeighboursAreAtTheRadiusOrAtTheEndOfTheGrid) {
+  for (const Case& c : cases(3, 1)) {
+    SCOPED_TRACE(describe(c));
+    const ModelInfo& info = model_info(c.material.model);
+    const std::vector<Neighbor> lobe = navigator().neighbors(c.material, c.radius, Tab::lobe);
+    std::vector<std::string> labels;
+    for (const ParamSpec& p : info.params)
+      labels.insert(labels.end(), {std::string(p.name) + "+", std::string(p.name) + "-"});
+    if (info.id == ModelId::ward) labels.insert(labels.end(), {"alpha+", "alpha-"});
+    ASSERT_EQ(lobe.size(), labels.size());
+    for (std::size_t i = 0; i < lobe.size(); ++i) {
+      const Neighbor& n = lobe[i];
+      EXPECT_EQ(n.label, labels[i]);
+      EXPECT_EQ(n.tab, Tab::lobe);
+      EXPECT_FALSE(n.clamped);
+      EXPECT_NO_THROW(validate(n.material));
+      expect_on_sphere(c, n, n.at_boundary);
+    }
+  }
+}
+
+TEST(Navigator, PlusAndMinusMoveTheirParameterOnly) {
+  for (const Case& c : cases(3, 2)) {
+    SCOPED_TRACE(describe(c));
+    const ParamGrid& grid = grid_of(c.material.model);
+    for (const Neighbor& n : navigator().neighbors(c.material, c.radius, Tab::lobe)) {
+      const bool up = n.label.back() == '+';
+      const std::string name = n.label.substr(0, n.label.size() - 1);
+      const int moved = find_param(model_info(c.material.model), name);
+      for (std::size_t d = 0; d < grid.dimensions(); ++d) {
+        const double before = c.material.params[d], after = n.material.params[d];
+        if (moved >= 0 && d != static_cast<std::size_t>(moved)) {
+          EXPECT_EQ(after, before) << n.label;
+          continue;
+        }
+        EXPECT_TRUE(up ? after > before : after < before) << n.label << ": " << after;
+        if (n.at_boundary && moved >= 0) {
+          EXPECT_EQ(after, up ? grid.axis(d).back() : grid.axis(d).front()) << n.label;
+        }
+      }
+      if (name == "alpha") {  // both slopes by one factor: the anisotropy is kept
+        EXPECT_NEAR(n.material.params[0] / n.material.params[1],
+                    c.material.params[0] / c.material.params[1], 1e-9);
+      }
+      EXPECT_TRUE((n.material.rho_d == c.material.rho_d).all());
+      EXPECT_TRUE((n.material.rho_s == c.material.rho_s).all());
+    }
+  }
+}
+
+TEST(Navigator, AMaterialAtTheEndOfItsGridStaysThereTowardTheEnd) {
+  Material m = default_material(ModelId::ward);
+  m.params = {grid_of(ModelId::ward).axis(0).back(), 0.02};
+  m.rho_s = Rgb::Constant(0.5);
+  const std::vector<Neighbor> lobe = navigator().neighbors(m, 0.01, Tab::lobe);
+  ASSERT_EQ(lobe[0].label, "alpha_x+");
+  EXPECT_TRUE(lobe[0].at_boundary);
+  EXPECT_EQ(lobe[0].distance, 0);
+  EXPECT_EQ(lobe[0].material.params, m.params);
+  EXPECT_FALSE(lobe[1].at_boundary);
+}
+
+TEST(Navigator, CielabOfReferenceColours) {
+  const Vec3 white = nav::rgb_to_lab(Rgb::Ones());
+  EXPECT_NEAR(white.x(), 100, 1e-9);
+  EXPECT_NEAR(white.y(), 0, 1e-9);
+  EXPECT_NEAR(white.z(), 0, 1e-9);
+  // sRGB red: L*a*b* (53.24, 80.09, 67.20) (Lindbloom's calculator, D65).
+  const Vec3 red = nav::rgb_to_lab(Rgb(1, 0, 0));
+  EXPECT_NEAR(red.x(), 53.24, 0.01);
+  EXPECT_NEAR(red.y(), 80.09, 0.01);
+  EXPECT_NEAR(red.z(), 67.20, 0.01);
+  const Rgb colour(0.3, 0.02, 4.5);
+  EXPECT_LT((nav::lab_to_rgb(nav::rgb_to_lab(colour)) - colour).abs().maxCoeff(), 1e-12);
+}
+
+// Colour neighbours: at eps and valid, or clamped at the edge of the valid range (inside the
+// sphere); L+ brighter, L- darker, the a-b ones at their hue and at the current L.
+void expect_colour_tab(const Case& c, Tab tab) {
+  const bool diffuse = tab == Tab::diffuse;
+  const double max = diffuse ? kRhoDMax : kRhoSMax;
+  const Rgb& before = diffuse ? c.material.rho_d : c.material.rho_s;
+  const Vec3 lab = nav::rgb_to_lab(before);
+  const std::vector<Neighbor> out = navigator().neighbors(c.material, c.radius, tab);
+  ASSERT_EQ(out.size(), 10u);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const Neighbor& n = out[i];
+    const Rgb& after = diffuse ? n.material.rho_d : n.material.rho_s;
+    EXPECT_TRUE((after >= 0).all() && (after <= max).all()) << n.label;
+    EXPECT_FALSE(n.at_boundary);
+    expect_on_sphere(c, n, n.clamped);
+    const Vec3 step = nav::rgb_to_lab(after) - lab;
+    if (step.norm() < 1e-6) continue;  // clamped at once: no direction to check
+    if (i < 2) {
+      EXPECT_EQ(n.label, i == 0 ? "L+" : "L-");
+      EXPECT_GT(i == 0 ? step.x() : -step.x(), 0) << n.label;
+    } else {
+      const int degrees = 45 * static_cast<int>(i - 2);
+      EXPECT_EQ(n.label, "ab+" + std::to_string(degrees));
+      const double angle = degrees * std::numbers::pi / 180;
+      EXPECT_NEAR(step.x(), 0, 1e-6 * step.norm()) << n.label;
+      EXPECT_NEAR(step.y() * std::sin(angle) - step.z() * std::cos(angle), 0, 1e-6 * step.norm())
+          << n.label;
+    }
+  }
+}
+
+TEST(Navigator, ColourNeighboursAreAtTheRadiusAndValid) {
+  for (const Case& c : cases(2, 3)) {
+    SCOPED_TRACE(describe(c));
+    expect_colour_tab(c, Tab::diffuse);
+    expect_colour_tab(c, Tab::specular);
+  }
+}
+
+TEST(Navigator, ColoursAtTheEdgeOfTheirRangeAreClamped) {
+  Material m = default_material(ModelId::blinn_phong);
+  m.rho_d = Rgb(0.98, 0.98, 0.98), m.rho_s = Rgb::Constant(0.2);
+  const Case white{m, 0.05};
+  const std::vector<Neighbor> diffuse = navigator().neighbors(m, white.radius, Tab::diffuse);
+  EXPECT_TRUE(diffuse[0].clamped) << "L+ of near-white";
+  EXPECT_FALSE(diffuse[1].clamped) << "L- of near-white";
+  expect_colour_tab(white, Tab::diffuse);
+  // Black: no other L and no hue is valid, so every neighbour but L+ is black itself (to the
+  // bisection's resolution).
+  m.rho_d = Rgb::Zero();
+  for (const Neighbor& n : navigator().neighbors(m, 0.01, Tab::diffuse)) {
+    if (n.label == "L+") continue;
+    EXPECT_TRUE(n.clamped) << n.label;
+    EXPECT_LT(n.material.rho_d.maxCoeff(), 1e-6) << n.label;
+    EXPECT_LT(n.distance, 1e-4) << n.label;
+  }
+}
+
+TEST(Navigator, ModelsTabShowsWhatTheCurrentModelCannot) {
+  const Navigator& nav = navigator();
+  std::size_t shown = 0;
+  for (const Case& c : cases(2, 4)) {
+    SCOPED_TRACE(describe(c));
+    const std::vector<Neighbor> out = nav.neighbors(c.material, c.radius, Tab::models, 5);
+    EXPECT_LE(out.size(), 5u);
+    shown += out.size();
+    for (const Neighbor& n : out) {
+      EXPECT_NE(n.material.model, c.material.model);
+      EXPECT_EQ(n.label, model_info(n.material.model).name);
+      EXPECT_NEAR(nav.distance(c.material, n.material), n.distance, 1e-6 * c.radius);
+      // Its best fit in the current model is at least delta = 0.3 eps away.
+      const Material back = nav.convert(n.material, c.material.model);
+      EXPECT_GE(nav.distance(n.material, back), 0.3 * c.radius) << n.label;
+    }
+  }
+  EXPECT_GT(shown, 0u) << "the filter dropped every neighbour of every case";
+}
+
+TEST(Navigator, ConversionsInterpolateTheTables) {
+  const Navigator& nav = navigator();
+  const ConversionTable& table = *nav.database().conversion(ModelId::ward, ModelId::blinn_phong);
+  const ParamGrid& grid = grid_of(ModelId::ward);
+  Material m = default_material(ModelId::ward);
+  m.rho_s = Rgb(0.5, 1, 2);
+  for (std::size_t node = 0; node < grid.node_count(); ++node) {
+    m.params = grid.node_values(node);
+    const Material fit = nav.convert(m, ModelId::blinn_phong);
+    EXPECT_DOUBLE_EQ(fit.params[0], table.nodes[node].params[0]);
+    EXPECT_TRUE((fit.rho_d == m.rho_d).all());
+    for (int ch = 0; ch < 3; ++ch)
+      EXPECT_DOUBLE_EQ(fit.rho_s[ch],
+                       std::min(kRhoSMax, m.rho_s[ch] * table.nodes[node].scale[ch]));
+  }
+  // Half way between two nodes in log(alpha): the fit's log(n) half way too.
+  m.params = {std::sqrt(grid.axis(0)[0] * grid.axis(0)[1]), grid.axis(1)[0]};
+  const double n0 = table.nodes[0].params[0], n1 = table.nodes[1].params[0];
+  EXPECT_NEAR(nav.convert(m, ModelId::blinn_phong).params[0], std::sqrt(n0 * n1), 1e-9 * n0);
+  const std::vector<Equivalent> eq = nav.equivalents(m);
+  ASSERT_EQ(eq.size(), static_cast<std::size_t>(kModelCount - 1));
+  for (const Equivalent& e : eq) EXPECT_DOUBLE_EQ(e.residual, nav.distance(m, e.material));
+}
+
+TEST(Navigator, ClusteringIsDeterministicAndIndependentOfThreads) {
+  NavigatorOptions four;
+  four.threads = 4;
+  const Navigator parallel = Navigator::open(test::NavigationDatabase::get().dir(), four);
+  for (const Case& c : cases(1, 5)) {
+    SCOPED_TRACE(describe(c));
+    const auto first = navigator().neighbors(c.material, c.radius, Tab::models, 3);
+    expect_same(first, navigator().neighbors(c.material, c.radius, Tab::models, 3));
+    expect_same(first, parallel.neighbors(c.material, c.radius, Tab::models, 3));
+  }
+  expect_same(navigator().gallery(8), parallel.gallery(8));
+  expect_same(navigator().gallery(8), navigator().gallery(8));
+}
+
+TEST(Navigator, GalleryReturnsDistinctMaterialsAtOneDistanceFromMatte) {
+  for (int k : {1, 3, 8, 12}) {
+    const std::vector<Neighbor> gallery = navigator().gallery(k);
+    ASSERT_EQ(gallery.size(), static_cast<std::size_t>(k));
+    std::set<std::string> distinct;
+    std::set<ModelId> models;
+    for (const Neighbor& n : gallery) {
+      EXPECT_EQ(n.tab, Tab::gallery);
+      EXPECT_EQ(n.label, model_info(n.material.model).name);
+      distinct.insert(format_material_spec(n.material));
+      models.insert(n.material.model);
+    }
+    EXPECT_EQ(distinct.size(), gallery.size());
+    if (k >= 8) {
+      EXPECT_GE(models.size(), 3u) << "the gallery should span several models";
+    }
+  }
+  // Through neighbors(), distances are from the current material.
+  const Material m = default_material(ModelId::he);
+  for (const Neighbor& n : navigator().neighbors(m, 0.01, Tab::gallery, 4))
+    EXPECT_NEAR(n.distance, navigator().distance(m, n.material), 1e-6);
+}
+
+TEST(Navigator, ConcurrentQueriesGiveTheSerialAnswers) {
+  const std::vector<Case> all = cases(1, 6);
+  const auto query = [&](const Case& c) {
+    std::vector<Neighbor> out;
+    for (Tab tab : kTabs) {
+      const auto some = navigator().neighbors(c.material, c.radius, tab, 4);
+      out.insert(out.end(), some.begin(), some.end());
+    }
+    return out;
+  };
+  std::vector<std::vector<Neighbor>> serial;
+  for (const Case& c : all) serial.push_back(query(c));
+  std::vector<std::vector<std::vector<Neighbor>>> parallel(8);
+  {
+    std::vector<std::jthread> threads;
+    for (int t = 0; t < 8; ++t)
+      threads.emplace_back([&, t] {
+        // Each thread walks the cases from another start, so different queries overlap.
+        for (std::size_t i = 0; i < all.size(); ++i)
+          parallel[t].push_back(query(all[(i + t) % all.size()]));
+      });
+  }
+  for (int t = 0; t < 8; ++t)
+    for (std::size_t i = 0; i < all.size(); ++i)
+      expect_same(parallel[t][i], serial[(i + t) % all.size()]);
+}
+
+TEST(Navigator, RejectsQueriesItCannotAnswer) {
+  const Material m = default_material(ModelId::ward);
+  for (double radius : {0.0, -0.1, double(NAN), double(INFINITY)}) {
+    try {
+      navigator().neighbors(m, radius, Tab::lobe);
+      ADD_FAILURE() << "radius " << radius;
+    } catch (const NavigatorError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("radius"));
+    }
+  }
+  EXPECT_THROW(navigator().neighbors(m, 0.01, Tab::models, 0), NavigatorError);
+  EXPECT_THROW(navigator().gallery(0), NavigatorError);
+  Material acescg = m;
+  acescg.colorspace = "acescg";
+  EXPECT_NO_THROW(navigator().neighbors(acescg, 0.01, Tab::lobe));
+  try {
+    navigator().neighbors(acescg, 0.01, Tab::diffuse);
+    ADD_FAILURE() << "colour tab of an acescg material";
+  } catch (const NavigatorError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("colorspace 'acescg'"));
+  }
+  Material bad = m;
+  bad.params[0] = 7;
+  EXPECT_THROW(navigator().neighbors(bad, 0.01, Tab::lobe), MaterialError);
+  EXPECT_THROW(Navigator::open("/nonexistent/brdfnav-db"), DatabaseError);
+}
+
+TEST(NavigationYaml, NeighbourListsReadBackWithTheirStableKeys) {
+  const Material m = parse_material_spec("lafortune:cz=0.57,n=300,rho_d=0.1/0.2/0.3,rho_s=0.5");
+  std::vector<Neighbor> all;
+  for (Tab tab : kTabs) {
+    const auto some = navigator().neighbors(m, 0.3, tab, 3);
+    all.insert(all.end(), some.begin(), some.end());
+  }
+  const YAML::Node doc = YAML::Load(neighbors_to_yaml(all));
+  ASSERT_TRUE(doc.IsMap());
+  EXPECT_EQ(doc.size(), 1u);
+  const YAML::Node list = doc["neighbors"];
+  ASSERT_TRUE(list.IsSequence());
+  ASSERT_EQ(list.size(), all.size());
+  bool some_flag = false;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const YAML::Node item = list[i];
+    std::set<std::string> keys;
+    for (const auto& kv : item) keys.insert(kv.first.as<std::string>());
+    EXPECT_EQ(keys, (std::set<std::string>{"tab", "label", "distance", "flags", "material"}));
+    EXPECT_EQ(item["tab"].as<std::string>(), tab_name(all[i].tab));
+    EXPECT_EQ(item["label"].as<std::string>(), all[i].label);
+    EXPECT_EQ(item["distance"].as<double>(), all[i].distance);
+    ASSERT_TRUE(item["flags"].IsSequence());
+    std::vector<std::string> flags;
+    if (all[i].at_boundary) flags.push_back("at_boundary");
+    if (all[i].clamped) flags.push_back("clamped");
+    some_flag |= !flags.empty();
+    EXPECT_EQ(item["flags"].as<std::vector<std::string>>(), flags);
+    EXPECT_FALSE(item["material"]["brdfnav_material"]);
+    EXPECT_TRUE(same(material_from_node(item["material"], "list", false), all[i].material));
+  }
+  EXPECT_TRUE(some_flag) << "radius 0.3 should reach some boundary";
+  EXPECT_EQ(neighbors_to_yaml({}), "neighbors: []\n");
+}
+
+TEST(NavigationYaml, AnExportReadsBackAsItsMaterial) {
+  const Navigator& nav = navigator();
+  const Material m = parse_material_spec("he:sigma=0.3,tau=9,eta=2,rho_d=0.1/0.2/0.3,rho_s=0.7");
+  const std::string text = export_to_yaml(nav, m);
+  EXPECT_TRUE(same(parse_material_yaml(text, "chosen.yaml"), m));
+  const YAML::Node doc = YAML::Load(text);
+  EXPECT_EQ(doc["brdfnav_material"].as<int>(), 1);
+  const YAML::Node p = doc["provenance"];
+  EXPECT_EQ(p["manifest_sha1"].as<std::string>(),
+            file_sha1(nav.database().dir() / "manifest.yaml"));
+  EXPECT_EQ(p["environment"]["path"].as<std::string>(), nav.database().manifest().env_path);
+  EXPECT_EQ(p["environment"]["pixel_sha1"].as<std::string>(), nav.database().manifest().env_hash);
+  EXPECT_THAT(p["metric"].as<std::string>(), HasSubstr("cube-root RMS"));
+  const YAML::Node eq = doc["equivalents"];
+  ASSERT_EQ(eq.size(), static_cast<std::size_t>(kModelCount - 1));
+  for (const Equivalent& e : nav.equivalents(m)) {
+    const YAML::Node item = eq[std::string(model_info(e.material.model).name)];
+    ASSERT_TRUE(item) << model_info(e.material.model).name;
+    EXPECT_EQ(item["residual"].as<double>(), e.residual);
+    EXPECT_TRUE(same(material_from_node(item["material"], "chosen.yaml", false), e.material));
+  }
+  // The export keys are accepted at the top of a file only.
+  EXPECT_THROW(material_from_node(doc, "chosen.yaml", true), MaterialError);
+  YAML::Node nested = YAML::Clone(eq["ward"]["material"]);
+  nested["provenance"] = "somewhere";
+  EXPECT_THROW(material_from_node(nested, "chosen.yaml", false), MaterialError);
+  EXPECT_THROW(parse_material_yaml(text + "extra: 1\n", "chosen.yaml"), MaterialError);
+}
+
+}  // namespace
+}  // namespace brdfnav

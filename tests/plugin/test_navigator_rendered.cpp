@@ -1,0 +1,77 @@
+// The claim behind the lobe tab: a neighbour at embedded distance eps looks eps away. Renders the
+// current material and each lobe neighbour with the pre-renderer, at the database's resolution
+// and render quality, and compares the exact cube-root RMS distance (image_distance) with eps.
+// The deviations depend on the database (grid density, coefficients kept) and on the
+// renderer's accuracy; BRDFNAV_TEST_NAV_DB=DIR measures another database than the test
+// profile's.
+#include "navigator_fixture.h"
+
+#include <brdfnav/navigator.h>
+#include <brdfnav/precompute/render.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+
+namespace brdfnav {
+namespace {
+
+std::filesystem::path database_dir() {
+  if (const char* dir = std::getenv("BRDFNAV_TEST_NAV_DB")) return dir;
+  return test::NavigationDatabase::get().dir();
+}
+
+// |rendered / eps - 1| at quantile q.
+double quantile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5)];
+}
+
+TEST(NavigatorRendered, LobeNeighboursLookEpsAway) {
+  const Navigator nav = Navigator::open(database_dir());
+  const Manifest& manifest = nav.database().manifest();
+  const EnvMap env = EnvMap::load(manifest.env_path, {}, [](const std::string&) {});
+  ASSERT_EQ(env.pixel_hash(), manifest.env_hash);
+  ASSERT_EQ(manifest.scene, "sphere");
+  RenderOptions options;
+  options.quality = make_profile(manifest.profile).quality;
+  const Scene scene = Scene::sphere();  // the renderer keeps a reference
+  Renderer renderer(env, scene, manifest.resolution, options);
+
+  std::mt19937_64 rng(2006);
+  std::vector<double> errors;
+  std::printf("%-14s %-10s %9s %9s %9s\n", "model", "label", "eps", "rendered", "error");
+  for (const ProfileGrid& g : manifest.grids) {
+    std::vector<double> model_errors;
+    for (int trial = 0; trial < 3; ++trial) {
+      const Material m = test::random_material(g.model, g.grid, rng, 0.3, 0.2, 1.0);
+      const Image current = renderer.render(m);
+      for (double eps : {0.01, 0.03}) {
+        for (const Neighbor& n : nav.neighbors(m, eps, Tab::lobe)) {
+          if (n.at_boundary) continue;  // nearer than eps by design
+          const double rendered = image_distance(current, renderer.render(n.material));
+          model_errors.push_back(std::abs(rendered / eps - 1));
+          std::printf("%-14s %-10s %9.4f %9.4f %+8.1f%%\n",
+                      std::string(model_info(g.model).name).c_str(), n.label.c_str(), eps, rendered,
+                      100 * (rendered / eps - 1));
+        }
+      }
+    }
+    if (model_errors.empty()) continue;
+    std::printf("%s: %zu neighbours, median |error| %.1f%%, p90 %.1f%%\n",
+                std::string(model_info(g.model).name).c_str(), model_errors.size(),
+                100 * quantile(model_errors, 0.5), 100 * quantile(model_errors, 0.9));
+    errors.insert(errors.end(), model_errors.begin(), model_errors.end());
+  }
+  ASSERT_FALSE(errors.empty());
+  const double median = quantile(errors, 0.5), p90 = quantile(errors, 0.9);
+  std::printf("all: %zu neighbours, median |error| %.1f%%, p90 %.1f%% (database %s, %d px)\n",
+              errors.size(), 100 * median, 100 * p90, manifest.profile.c_str(),
+              manifest.resolution);
+  EXPECT_LE(median, 0.05);
+  EXPECT_LE(p90, 0.10);
+}
+
+}  // namespace
+}  // namespace brdfnav
