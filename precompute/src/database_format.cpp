@@ -47,6 +47,8 @@ void emit_settings(YAML::Emitter& out, const Profile& p, const EnvMap& env, cons
   const RenderQuality& q = p.quality;
   out << YAML::Key << "render_quality" << YAML::Value << YAML::Flow << YAML::BeginMap;
   out << YAML::Key << "texels_per_width" << YAML::Value << q.texels_per_width;
+  out << YAML::Key << "hot_texels_per_width" << YAML::Value << q.hot_texels_per_width;
+  out << YAML::Key << "max_node" << YAML::Value << q.max_node;
   out << YAML::Key << "reach" << YAML::Value << q.reach;
   out << YAML::Key << "max_split" << YAML::Value << q.max_split << YAML::EndMap;
   out << YAML::Key << "pca" << YAML::Value << YAML::Flow << YAML::BeginMap;

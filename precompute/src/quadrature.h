@@ -1,12 +1,14 @@
 // The per-pixel quadrature (docs/RENDERER.md): integral of L_env(w) K(w) dw as
-//   sum over the pyramid nodes of one level inside the kernel's window of power * K(centroid)
+//   sum over the nodes of one grid inside the kernel's window of power * K(centroid), corrected
 //   + sum over the hot texels of radiance * integral of K over the texel.
-// The level is the coarsest whose nodes are at most 1 / texels_per_width of the kernel's narrowest
-// width (pieces of texels below level 0); the window is the ellipse of `reach` widths around the
-// kernel's peak. Luminance-weighted centroids make the rule exact to first order in the kernel;
-// the hot texels (lamps), which lobes see far into their tails, are integrated over pieces as
-// fine as the lobe needs wherever it reaches them. No randomness, a fixed order of summation:
-// results are deterministic and continuous in the kernel's parameters.
+// The grid is the coarsest pyramid level whose nodes are at most 1 / texels_per_width of the
+// kernel's narrowest width, or level 0 with every texel cut into equal pieces for kernels
+// narrower than that. The window is the ellipse of `reach` widths around the kernel's peak.
+// Luminance-weighted centroids make the midpoint rule exact to first order; the second order is
+// corrected with the grid's own second differences of K (the corrected midpoint rule,
+// + (K_left + K_right + K_up + K_down - 4 K) / 24 per node). The hot texels (lamps), which lobes
+// see far into their tails, are cut into pieces as fine as the lobe needs wherever it reaches
+// them. No randomness and a fixed order of summation: results are deterministic.
 #pragma once
 
 #include "env_pyramid.h"
@@ -25,6 +27,13 @@ struct AlwaysVisible {
   bool operator()(const Vec3&) const { return true; }
 };
 
+// Per-thread scratch space of the quadrature, reused from pixel to pixel.
+struct QuadratureScratch {
+  std::vector<std::pair<int, int>> spans;  // per window row: first and last (unwrapped) column
+  std::vector<std::size_t> offsets;        // per window row: index of its first node below
+  std::vector<Rgb> kernel, power;          // per window node
+};
+
 template <typename Kernel, typename Visible = AlwaysVisible>
 class Quadrature {
  public:
@@ -36,19 +45,24 @@ class Quadrature {
     major_width_ = shape.major_width * wide;
     minor_width_ = shape.minor_width * wide;
     reach_ = quality.reach;
-    const double step = shape.minor_width / quality.texels_per_width;
+    // Broad kernels too: the horizon cuts every lobe, and the second differences only correct
+    // what is smooth at the scale of a node.
+    const double step = std::min(shape.minor_width / quality.texels_per_width, quality.max_node);
     level_ = 0;
     while (level_ + 1 < env.level_count() && env.node_angle(level_ + 1) <= step) ++level_;
-    auto split = [&](double piece) {
+    auto pieces_for = [&](double piece) {
       return std::clamp(static_cast<int>(std::ceil(env.node_angle(0) / piece)), 1,
                         quality.max_split);
     };
-    split_ = level_ > 0 ? 1 : split(step);
-    hot_split_ = split(step / 2);
+    split_ = level_ > 0 ? 1 : pieces_for(step);
+    hot_split_ = pieces_for(shape.minor_width / quality.hot_texels_per_width);
+    grid_w_ = env.width(level_) * split_;
+    grid_h_ = env.height(level_) * split_;
+    node_angle_ = kPi / grid_h_;
   }
 
-  Rgb integrate() const {
-    Rgb sum = window_sum();
+  Rgb integrate(QuadratureScratch& scratch) const {
+    Rgb sum = window_sum(scratch);
     for (const EnvPyramid::HotTexel& t : env_.hot()) sum += hot_sum(t);
     return sum;
   }
@@ -69,71 +83,97 @@ class Quadrature {
     return k;
   }
 
-  // Level-0 texel (x, y) of solid angle `omega` split into split x split pieces of its
-  // radiance, each at the texel's centre moved along the tangents of theta and phi (exact to
-  // second order in the texel's size) and worth an equal share of the solid angle.
-  Rgb pieces(int x, int y, const Rgb& radiance, double omega, int split) const {
-    const int w = env_.width(0), h = env_.height(0);
-    const double theta = kPi * (y + 0.5) / h, phi = 2 * kPi * ((x + 0.5) / w - 0.5);
-    const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
-    const Vec3 centre(-st * sp, ct, st * cp), e_theta(-ct * sp, -st, ct * cp), e_phi(-cp, 0, -sp);
-    const double d_theta = kPi / h / split, d_phi = 2 * kPi / w * st / split;
-    Rgb sum = Rgb::Zero();
-    for (int j = 0; j < split; ++j) {
-      const Vec3 row = centre + ((j + 0.5) - 0.5 * split) * d_theta * e_theta;
-      for (int i = 0; i < split; ++i)
-        sum += value((row + ((i + 0.5) - 0.5 * split) * d_phi * e_phi).normalized());
-    }
-    return sum * radiance * (omega / (split * split));
+  // Node (x, y) of the grid: a pyramid node, or a piece of a level-0 texel carrying an equal
+  // share of its power, at the piece's centre (st, ct: sine and cosine of the row's theta).
+  EnvNode grid_node(int x, int y, double st, double ct) const {
+    if (split_ == 1) return env_.node(level_, x, y);
+    const EnvNode texel = env_.node(0, x / split_, y / split_);
+    const double phi = 2 * kPi * ((x + 0.5) / grid_w_ - 0.5);
+    return {Vec3(-st * std::sin(phi), ct, st * std::cos(phi)),
+            texel.power / static_cast<double>(split_ * split_)};
   }
 
-  // The nodes of the window: rows, then the span of columns each row's band reaches.
-  Rgb window_sum() const {
-    const int w = env_.width(level_);
-    const double node = env_.node_angle(level_), margin = 1.5 * node;
+  // Pass 1 evaluates K at every node of the window's rows; pass 2 sums power * K with the
+  // second-difference correction wherever a node has its four neighbours.
+  Rgb window_sum(QuadratureScratch& s) const {
+    const double margin = 1.5 * node_angle_;
     int y0 = 0;
-    std::vector<std::pair<int, int>> spans;
-    if (!ellipse_spans(margin, y0, spans)) cap_spans(margin, y0, spans);
+    s.spans.clear();
+    if (!ellipse_spans(margin, y0, s.spans)) cap_spans(margin, y0, s.spans);
+    const std::size_t rows = s.spans.size();
+    s.offsets.resize(rows + 1);
+    s.kernel.clear(), s.power.clear();
+    for (std::size_t r = 0; r < rows; ++r) {
+      s.offsets[r] = s.kernel.size();
+      const double theta = (y0 + r + 0.5) * node_angle_;
+      const double st = std::sin(theta), ct = std::cos(theta);
+      const auto [x0, x1] = s.spans[r];
+      for (int xs = x0, x = wrap(x0); xs <= x1; ++xs, x = x + 1 == grid_w_ ? 0 : x + 1) {
+        const EnvNode n = grid_node(x, y0 + static_cast<int>(r), st, ct);
+        const bool inside = in_window(n.centroid, margin, reach_);
+        s.kernel.push_back(inside ? value(n.centroid) : Rgb::Zero());
+        s.power.push_back(inside ? n.power : Rgb::Zero());
+      }
+    }
+    s.offsets[rows] = s.kernel.size();
     Rgb sum = Rgb::Zero();
-    for (std::size_t r = 0; r < spans.size(); ++r) {
-      const int y = y0 + static_cast<int>(r);
-      for (int xs = spans[r].first; xs <= spans[r].second; ++xs) {
-        const int x = ((xs % w) + w) % w;
-        const EnvNode n = env_.node(level_, x, y);
-        if (!(n.power > 0).any() || !in_window(n.centroid, margin, reach_)) continue;
-        if (split_ == 1) {
-          sum += n.power * value(n.centroid);
-        } else {
-          const double omega = env_.texel_solid_angle(y);
-          sum += pieces(x, y, n.power / omega, omega, split_);
+    for (std::size_t r = 0; r < rows; ++r) {
+      const auto [x0, x1] = s.spans[r];
+      const bool full = x1 - x0 + 1 >= grid_w_;
+      for (int xs = x0; xs <= x1; ++xs) {
+        const std::size_t i = s.offsets[r] + (xs - x0);
+        if (!(s.power[i] > 0).any()) continue;
+        Rgb k = s.kernel[i];
+        const Rgb* up = r > 0 ? at(s, r - 1, xs) : nullptr;
+        const Rgb* down = r + 1 < rows ? at(s, r + 1, xs) : nullptr;
+        if (up && down && (full || (xs > x0 && xs < x1))) {
+          const std::size_t left = xs > x0 ? i - 1 : s.offsets[r + 1] - 1;
+          const std::size_t right = xs < x1 ? i + 1 : s.offsets[r];
+          k = (k + (*up + *down + s.kernel[left] + s.kernel[right] - 4 * k) / 24).cwiseMax(0);
         }
+        sum += s.power[i] * k;
       }
     }
     return sum;
   }
 
+  int wrap(int xs) const {
+    const int x = xs % grid_w_;
+    return x < 0 ? x + grid_w_ : x;
+  }
+
+  // K at unwrapped column xs of window row r, or nullptr outside the row's span (a row spanning
+  // the whole grid wraps around).
+  const Rgb* at(const QuadratureScratch& s, std::size_t r, int xs) const {
+    const auto [x0, x1] = s.spans[r];
+    int i = xs - x0;
+    if (x1 - x0 + 1 >= grid_w_) i = wrap(i);
+    if (i < 0 || i > x1 - x0) return nullptr;
+    return &s.kernel[s.offsets[r] + i];
+  }
+
   // Spans of the spherical cap of the window's major radius (any window, but loose for narrow
   // ellipses); whole rows where the cap reaches a pole.
   void cap_spans(double margin, int& y0, std::vector<std::pair<int, int>>& spans) const {
-    const int w = env_.width(level_), h = env_.height(level_);
-    const double node = env_.node_angle(level_);
     const double radius = std::min(kPi, reach_ * major_width_ + margin);
     const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
     const double u_p = EnvMap::texcoord(peak_).x();
-    y0 = std::max(0, static_cast<int>(std::floor((theta_p - radius) / node)));
-    const int y1 = std::min(h - 1, static_cast<int>(std::floor((theta_p + radius) / node)));
+    y0 = std::max(0, static_cast<int>(std::floor((theta_p - radius) / node_angle_)));
+    const int y1 =
+        std::min(grid_h_ - 1, static_cast<int>(std::floor((theta_p + radius) / node_angle_)));
     for (int y = y0; y <= y1; ++y) {
-      const double half = half_width(theta_p, radius, y * node, (y + 1) * node);
-      int x0 = 0, x1 = w - 1;
+      const double half = half_width(theta_p, radius, y * node_angle_, (y + 1) * node_angle_);
+      int x0 = 0, x1 = grid_w_ - 1;
       if (half < kPi) {
-        x0 = static_cast<int>(std::floor((u_p - half / (2 * kPi)) * w));
-        x1 = std::min(x0 + w - 1, static_cast<int>(std::floor((u_p + half / (2 * kPi)) * w)));
+        x0 = static_cast<int>(std::floor((u_p - half / (2 * kPi)) * grid_w_));
+        x1 = std::min(x0 + grid_w_ - 1,
+                      static_cast<int>(std::floor((u_p + half / (2 * kPi)) * grid_w_)));
       }
       spans.emplace_back(x0, x1);
     }
   }
 
-  // Spans of a polygon around the window's ellipse in texel coordinates (columns unwrapped around
+  // Spans of a polygon around the window's ellipse in grid coordinates (columns unwrapped around
   // the peak's), scan-converted row by row. False when the window is too wide or reaches a pole,
   // where lat-long coordinates fold: cap_spans() then.
   bool ellipse_spans(double margin, int& y0, std::vector<std::pair<int, int>>& spans) const {
@@ -141,24 +181,23 @@ class Quadrature {
     const double a = reach_ * major_width_ + margin, b = reach_ * minor_width_ + margin;
     const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
     if (a > 1.0 || theta_p - 1.2 * a <= 0 || theta_p + 1.2 * a >= kPi) return false;
-    const int w = env_.width(level_), h = env_.height(level_);
-    const double x_p = EnvMap::texcoord(peak_).x() * w;
+    const double x_p = EnvMap::texcoord(peak_).x() * grid_w_;
     // Circumscribed: the polygon's edges stay outside the ellipse.
     const double grow = 1 / std::cos(kPi / kVertices);
     std::array<Vec2, kVertices + 1> p;
-    double y_min = h, y_max = 0;
+    double y_min = grid_h_, y_max = 0;
     for (int k = 0; k < kVertices; ++k) {
       const double t = 2 * kPi * k / kVertices;
-      const Vec3 d = (peak_ + grow * (a * std::cos(t) * major_ + b * std::sin(t) * minor_));
+      const Vec3 d = peak_ + grow * (a * std::cos(t) * major_ + b * std::sin(t) * minor_);
       const Vec2 uv = EnvMap::texcoord(d);
-      double x = uv.x() * w - x_p;
-      x -= w * std::round(x / w);
-      p[k] = Vec2(x_p + x, uv.y() * h);
+      double x = uv.x() * grid_w_ - x_p;
+      x -= grid_w_ * std::round(x / grid_w_);
+      p[k] = Vec2(x_p + x, uv.y() * grid_h_);
       y_min = std::min(y_min, p[k].y()), y_max = std::max(y_max, p[k].y());
     }
     p[kVertices] = p[0];
     y0 = std::max(0, static_cast<int>(std::floor(y_min)));
-    const int y1 = std::min(h - 1, static_cast<int>(std::floor(y_max)));
+    const int y1 = std::min(grid_h_ - 1, static_cast<int>(std::floor(y_max)));
     for (int y = y0; y <= y1; ++y) {
       double lo = 1e300, hi = -1e300;
       for (int k = 0; k < kVertices; ++k) {
@@ -174,7 +213,7 @@ class Quadrature {
       }
       if (lo > hi) lo = hi = x_p;
       const int x0 = static_cast<int>(std::floor(lo));
-      spans.emplace_back(x0, std::min(x0 + w - 1, static_cast<int>(std::floor(hi))));
+      spans.emplace_back(x0, std::min(x0 + grid_w_ - 1, static_cast<int>(std::floor(hi))));
     }
     return true;
   }
@@ -183,14 +222,13 @@ class Quadrature {
   // `radius` of it whose polar angle is in [t0, t1]; pi when the cap reaches a pole.
   static double half_width(double theta_p, double radius, double t0, double t1) {
     if (theta_p - radius <= 0 || theta_p + radius >= kPi) return kPi;
-    double best = 0;
     auto at = [&](double t) {
       const double s = std::sin(t) * std::sin(theta_p);
       if (s <= 0) return kPi;
       const double c = (std::cos(radius) - std::cos(t) * std::cos(theta_p)) / s;
       return c <= -1 ? kPi : c >= 1 ? 0.0 : std::acos(c);
     };
-    best = std::max(at(t0), at(t1));
+    double best = std::max(at(t0), at(t1));
     // The widest latitude of the cap, cos(t) = cos(theta_p) / cos(radius), when in the band.
     if (radius < kPi / 2) {
       const double t = std::acos(std::clamp(std::cos(theta_p) / std::cos(radius), -1.0, 1.0));
@@ -199,19 +237,36 @@ class Quadrature {
     return best;
   }
 
-  // A hot texel, in pieces twice as fine as the window's step wherever a wider window reaches
-  // it (the lobe's tails see lamps from afar, where the kernel falls fastest); whole elsewhere.
+  // A hot texel, in pieces of hot_split_^2 wherever a window twice as wide reaches it (the
+  // lobe's tails see lamps from afar, where the kernel falls fastest); whole farther out. Each
+  // piece sits at the texel's centre moved along the tangents of theta and phi (exact to second
+  // order in the texel's size) and carries an equal share of its solid angle.
   Rgb hot_sum(const EnvPyramid::HotTexel& t) const {
-    if (hot_split_ > 1 && in_window(t.centroid, env_.node_angle(0), 2 * reach_))
-      return pieces(t.x, t.y, t.radiance, t.solid_angle, hot_split_);
-    return value(t.centroid) * (t.radiance * t.solid_angle);
+    // Beyond four times the window even a lamp 10^5 times the map's mean adds nothing: the
+    // lobes fall at least like Gaussians of their width there (exp(-128)).
+    const double margin = env_.node_angle(0);
+    if (!in_window(t.centroid, margin, 4 * reach_)) return Rgb::Zero();
+    if (hot_split_ == 1 || !in_window(t.centroid, margin, 2 * reach_))
+      return value(t.centroid) * (t.radiance * t.solid_angle);
+    const int w = env_.width(0), h = env_.height(0), n = hot_split_;
+    const double theta = kPi * (t.y + 0.5) / h, phi = 2 * kPi * ((t.x + 0.5) / w - 0.5);
+    const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
+    const Vec3 centre(-st * sp, ct, st * cp), e_theta(-ct * sp, -st, ct * cp), e_phi(-cp, 0, -sp);
+    const double d_theta = kPi / h / n, d_phi = 2 * kPi / w * st / n;
+    Rgb sum = Rgb::Zero();
+    for (int j = 0; j < n; ++j) {
+      const Vec3 row = centre + ((j + 0.5) - 0.5 * n) * d_theta * e_theta;
+      for (int i = 0; i < n; ++i)
+        sum += value((row + ((i + 0.5) - 0.5 * n) * d_phi * e_phi).normalized());
+    }
+    return sum * t.radiance * (t.solid_angle / (n * n));
   }
 
   const EnvPyramid& env_;
   const Kernel& kernel_;
   Vec3 peak_, major_, minor_;
-  double major_width_, minor_width_, reach_;
-  int level_, split_, hot_split_;
+  double major_width_, minor_width_, reach_, node_angle_;
+  int level_, split_, hot_split_, grid_w_, grid_h_;
   Visible visible_;
 };
 

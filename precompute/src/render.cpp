@@ -16,6 +16,8 @@ namespace brdfnav {
 RenderQuality RenderQuality::finer(double factor) const {
   RenderQuality q = *this;
   q.texels_per_width *= factor;
+  q.hot_texels_per_width *= factor;
+  q.max_node /= factor;
   q.reach *= 1 + 0.25 * std::log2(std::max(factor, 1.0));
   q.max_split = static_cast<int>(std::ceil(max_split * factor));
   return q;
@@ -59,7 +61,7 @@ std::vector<double> mirror_widths(const SurfaceBuffer& s, double texel_angle) {
   return widths;
 }
 
-// Runs row(y) for every image row on `threads` workers while the calling thread reports
+// Runs row(y, scratch) for every image row on `threads` workers while the calling thread reports
 // progress. Rows are independent, so the result does not depend on the scheduling.
 template <typename Row>
 void parallel_rows(int rows, int threads, const ProgressSink& progress, Row row) {
@@ -67,8 +69,9 @@ void parallel_rows(int rows, int threads, const ProgressSink& progress, Row row)
   std::mutex mutex;
   std::condition_variable finished;
   auto worker = [&] {
+    QuadratureScratch scratch;
     for (int y; (y = next++) < rows;) {
-      row(y);
+      row(y, scratch);
       if (++done == rows) {
         std::lock_guard lock(mutex);
         finished.notify_all();
@@ -101,7 +104,8 @@ struct Renderer::Impl {
       : env(e), scene(s), resolution(res), options(std::move(o)), pyramid(e) {
     if (res < 1) throw std::invalid_argument("resolution must be at least 1");
     const RenderQuality& q = options.quality;
-    if (!(q.texels_per_width > 0) || !(q.reach > 0) || q.max_split < 1)
+    if (!(q.texels_per_width > 0) || !(q.hot_texels_per_width > 0) || !(q.max_node > 0) ||
+        !(q.reach > 0) || q.max_split < 1)
       throw std::invalid_argument("render quality: every knob must be positive");
     surface = scene.trace_camera(res);
     mirror_width = mirror_widths(surface, kPi / env.height());
@@ -112,16 +116,16 @@ struct Renderer::Impl {
     return std::max(1u, std::thread::hardware_concurrency());
   }
 
-  // Image whose covered pixels hold pixel(point, index).
+  // Image whose covered pixels hold pixel(point, index, scratch).
   template <typename Pixel>
   Image render_pass(Pixel pixel) {
     Image image(resolution, resolution);
-    parallel_rows(resolution, threads(), options.progress, [&](int y) {
+    parallel_rows(resolution, threads(), options.progress, [&](int y, QuadratureScratch& s) {
       for (int x = 0; x < resolution; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * resolution + x;
         const SurfacePoint& p = surface.points[i];
         if (!p.covered) continue;
-        const Rgb v = pixel(p, i);
+        const Rgb v = pixel(p, i, s);
         float* out = image.pixel(x, y);
         for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(v[c]);
         out[3] = 1.f;
@@ -131,30 +135,33 @@ struct Renderer::Impl {
   }
 
   template <typename Kernel>
-  Rgb integrate(const Kernel& kernel, const KernelShape& shape, const SurfacePoint& p) const {
-    if (scene.convex()) return Quadrature(pyramid, kernel, shape, options.quality).integrate();
+  Rgb integrate(const Kernel& kernel, const KernelShape& shape, const SurfacePoint& p,
+                QuadratureScratch& s) const {
+    if (scene.convex()) return Quadrature(pyramid, kernel, shape, options.quality).integrate(s);
     auto visible = [&](const Vec3& w) { return !scene.occluded(p, w); };
-    return Quadrature(pyramid, kernel, shape, options.quality, visible).integrate();
+    return Quadrature(pyramid, kernel, shape, options.quality, visible).integrate(s);
   }
 
-  Rgb diffuse_pixel(const SurfacePoint& p) const {
-    return integrate(LambertKernel{p.normal}, KernelShape::isotropic(p.normal, kLambertWidth), p);
+  Rgb diffuse_pixel(const SurfacePoint& p, QuadratureScratch& s) const {
+    return integrate(LambertKernel{p.normal}, KernelShape::isotropic(p.normal, kLambertWidth), p,
+                     s);
   }
 
   template <typename L>
-  Rgb specular_pixel(const L& lobe, const Lobe& any, const SurfacePoint& p, std::size_t i) const {
+  Rgb specular_pixel(const L& lobe, const Lobe& any, const SurfacePoint& p, std::size_t i,
+                     QuadratureScratch& s) const {
     const Frame frame = pixel_frame(p);
     const Vec3 wo = frame.to_local(kViewDirection);
     if (wo.z() <= 0) return Rgb::Zero();
     const KernelShape shape = lobe_shape(any, wo).to_world(frame);
-    Rgb sum = integrate(LobeKernel<L>{lobe, frame, wo}, shape, p);
+    Rgb sum = integrate(LobeKernel<L>{lobe, frame, wo}, shape, p, s);
     if constexpr (requires { lobe.mirror_weight(wo); }) {
       const Rgb weight = lobe.mirror_weight(wo);
       if ((weight > 0).any()) {
         const Vec3 mirror = reflect(kViewDirection, p.normal);
         const double width = mirror_width[i];
         sum += integrate(MirrorKernel(mirror, weight, width), KernelShape::isotropic(mirror, width),
-                         p);
+                         p, s);
       }
     }
     return sum;
@@ -183,8 +190,10 @@ void Renderer::set_progress(ProgressSink progress) {
 
 const Image& Renderer::diffuse() {
   if (!impl_->diffuse) {
-    impl_->diffuse = impl_->render_pass(
-        [&](const SurfacePoint& p, std::size_t) { return impl_->diffuse_pixel(p); });
+    impl_->diffuse = impl_->render_pass([&](const SurfacePoint& p, std::size_t,
+                                            QuadratureScratch& s) {
+      return impl_->diffuse_pixel(p, s);
+    });
   }
   return *impl_->diffuse;
 }
@@ -193,8 +202,8 @@ Image Renderer::specular(const Lobe& lobe) {
   return std::visit(
       [&](const auto& l) {
         return impl_->render_pass(
-            [&](const SurfacePoint& p, std::size_t i) {
-              return impl_->specular_pixel(l, lobe, p, i);
+            [&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
+              return impl_->specular_pixel(l, lobe, p, i, s);
             });
       },
       lobe);
@@ -209,8 +218,9 @@ Image Renderer::render(const Material& material) {
 ImageMetadata render_metadata(const Renderer& renderer, const Material* material) {
   const RenderQuality& q = renderer.options().quality;
   char quality[160];
-  std::snprintf(quality, sizeof quality, "texels_per_width=%g reach=%g max_split=%d",
-                q.texels_per_width, q.reach, q.max_split);
+  std::snprintf(quality, sizeof quality,
+                "texels_per_width=%g hot_texels_per_width=%g max_node=%g reach=%g max_split=%d",
+                q.texels_per_width, q.hot_texels_per_width, q.max_node, q.reach, q.max_split);
   ImageMetadata m{{"brdfnav:env", renderer.env().source()},
                   {"brdfnav:env_sha1", renderer.env().pixel_hash()},
                   {"brdfnav:scene", renderer.scene().description()},

@@ -19,7 +19,7 @@ const std::vector<AccuracySetting>& accuracy_settings() {
       {M::lafortune, "smooth", {0.57, 5000}},
       {M::lafortune, "medium", {0.56, 200}},
       {M::lafortune, "rough", {0.5, 5}},
-      {M::he, "smooth", {0.05, 20, 1.5}},
+      {M::he, "smooth", {0.1, 10, 1.5}},
       {M::he, "medium", {0.3, 8, 2}},
       {M::he, "rough", {1.5, 4, 4}},
   };

@@ -1,0 +1,69 @@
+// `brdfnav render` and `brdfnav distance` end to end: the images, the metric, and failures that
+// leave nothing behind.
+#include "app/cli_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+namespace brdfnav::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TempDir {
+  fs::path path = fs::temp_directory_path() / ("brdfnav_cli_render_" + std::to_string(::getpid()));
+  TempDir() { fs::remove_all(path), fs::create_directories(path); }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+TEST(CliRender, RendersImagesWhoseDistanceIsTheMetric) {
+  TempDir dir;
+  const fs::path a = dir.path / "a.exr", b = dir.path / "b.exr";
+  auto r = run_cli("render --material ward:alpha_x=0.1,alpha_y=0.1,rho_d=0.2,rho_s=0.5 --res 24 "
+                   "--out " + a.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_cli("render --material ward:alpha_x=0.2,alpha_y=0.2,rho_d=0.2,rho_s=0.5 --res 24 --out " +
+              b.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_cli("distance " + a.string() + " " + a.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(std::stod(r.out), 0.0);
+  r = run_cli("distance " + a.string() + " " + b.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(std::stod(r.out), 0.01);
+  EXPECT_LT(std::stod(r.out), 1.0);
+}
+
+TEST(CliRender, FailuresLeaveNoOutputFile) {
+  TempDir dir;
+  const fs::path out = dir.path / "bad.exr";
+  auto r = run_cli("render --material ward:alpha_x=-1 --res 16 --out " + out.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("alpha_x"), std::string::npos) << r.err;
+  r = run_cli("render --material ward --env " + (dir.path / "missing.exr").string() +
+              " --res 16 --out " + out.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("missing.exr"), std::string::npos) << r.err;
+  r = run_cli("render --material ward --scene " + (dir.path / "missing.obj").string() +
+              " --res 16 --out " + out.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("missing.obj"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator{}), 0);
+}
+
+TEST(CliRender, DistanceRejectsMismatchedImages) {
+  TempDir dir;
+  const fs::path a = dir.path / "a.exr", b = dir.path / "b.exr";
+  ASSERT_EQ(run_cli("render --material blinn_phong --res 16 --out " + a.string()).exit_code, 0);
+  ASSERT_EQ(run_cli("render --material blinn_phong --res 20 --out " + b.string()).exit_code, 0);
+  const auto r = run_cli("distance " + a.string() + " " + b.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_FALSE(r.err.empty());
+  EXPECT_NE(run_cli("distance " + a.string() + " " + (dir.path / "none.exr").string()).exit_code,
+            0);
+}
+
+}  // namespace
+}  // namespace brdfnav::test
