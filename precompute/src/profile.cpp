@@ -58,9 +58,9 @@ Profile make_profile(const std::string& name) {
     p.resolution = 128;
     p.grids = table_grids();
   } else if (name == "test") {
-    // The renderer sets this: the whole build takes about 30 s at 8 x 8 and 105 s at 16 x 16
-    // on a 2-core machine, nearly all of it He's 8 images. Raise it when He renders faster.
-    p.resolution = 8;
+    // The renderer sets this: He's eight images are most of the build, which takes about 30 s
+    // at 16 x 16 on a 2-core machine (docs/DATABASE.md).
+    p.resolution = 16;
     p.grids = test_grids();
     p.q_nodes = 5;
     p.pca.components = 24;

@@ -42,7 +42,7 @@ struct Profile {
 };
 
 // "paper": Table 1 grids at 320 x 320 with 200 coefficients; "default": the same grids at
-// 128 x 128 (what `./run demo` uses); "test": small grids at 8 x 8 for CI (the renderer's speed
+// 128 x 128 (what `./run demo` uses); "test": small grids at 16 x 16 for CI (the renderer's speed
 // sets this). Throws ProfileError for any other name.
 Profile make_profile(const std::string& name);
 const std::vector<std::string>& profile_names();

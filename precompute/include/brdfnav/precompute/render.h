@@ -27,7 +27,7 @@ struct RenderQuality {
   double hot_texels_per_width = 5;    // ... for the pieces of the hot texels (lamps)
   double max_node = 0.15;             // radians: the largest node, whatever the lobe's width
   double reach = 4;                   // the window around the lobe's peak, in lobe widths
-  int max_split = 32;                 // a texel is cut into at most max_split^2 pieces
+  int max_split = 16;                 // a texel is cut into at most max_split^2 pieces
 
   // The same quadrature `factor` times finer in angle, over a wider window.
   RenderQuality finer(double factor) const;
