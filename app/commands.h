@@ -19,6 +19,7 @@ void add_demo_command(CLI::App& app);     // demo
 void add_render_commands(CLI::App& app);  // render, distance
 void add_precompute_commands(CLI::App& app);  // precompute, db-info
 void add_navigate_commands(CLI::App& app);    // neighbors, export
+void add_validate_command(CLI::App& app);     // validate
 
 // The options every command that renders shares: --env, --sanitize-env, --res, --scene.
 struct SceneOptions {

@@ -48,8 +48,16 @@ std::string tick_text(double v, bool log_axis) {
 
 void text(OIIO::ImageBuf& img, int x, int y, const std::string& s, int size,
           IBA::TextAlignX ax = IBA::TextAlignX::Left,
-          IBA::TextAlignY ay = IBA::TextAlignY::Baseline) {
-  IBA::render_text(img, x, y, s, size, kFont, kInk, ax, ay);
+          IBA::TextAlignY ay = IBA::TextAlignY::Baseline, std::array<float, 3> ink = kInk) {
+  IBA::render_text(img, x, y, s, size, kFont, ink, ax, ay);
+}
+
+void write_png(OIIO::ImageBuf& img, const std::filesystem::path& png) {
+  img.set_write_format(OIIO::TypeDesc::UINT8);
+  AtomicOutput out(png);
+  if (!img.write(out.temp_path().string()))
+    throw std::runtime_error(png.string() + ": cannot write image: " + img.geterror());
+  out.commit();
 }
 
 }  // namespace
@@ -112,19 +120,50 @@ void write_line_plot(const std::filesystem::path& png, const PlotSpec& spec,
     const PlotSeries& s = series[k];
     for (std::size_t i = 1; i < s.x.size(); ++i) {
       if (!usable(s.y[i - 1]) || !usable(s.y[i])) continue;
-      IBA::render_line(img, px(s.x[i - 1]), py(ty(s.y[i - 1])), px(s.x[i]), py(ty(s.y[i])),
-                       s.color);
+      // Two pixels wide, so that thin series stay readable next to each other.
+      for (int d = 0; d < 2; ++d)
+        IBA::render_line(img, px(s.x[i - 1]), py(ty(s.y[i - 1])) + d, px(s.x[i]),
+                         py(ty(s.y[i])) + d, s.color);
     }
+    for (std::size_t i = 0; s.markers && i < s.x.size(); ++i)
+      if (usable(s.y[i]))
+        IBA::render_box(img, px(s.x[i]) - 3, py(ty(s.y[i])) - 3, px(s.x[i]) + 3, py(ty(s.y[i])) + 3,
+                        s.color, true);
     const int ly = top + 20 + int(k) * 24;
     IBA::render_box(img, right + 15, ly - 8, right + 40, ly - 4, s.color, true);
     text(img, right + 48, ly, s.label, 15);
   }
 
-  img.set_write_format(OIIO::TypeDesc::UINT8);
-  AtomicOutput out(png);
-  if (!img.write(out.temp_path().string()))
-    throw std::runtime_error(png.string() + ": cannot write plot: " + img.geterror());
-  out.commit();
+  write_png(img, png);
+}
+
+StripSize write_image_strip(const std::filesystem::path& png, const std::string& title,
+                            const std::vector<StripTile>& tiles) {
+  constexpr int kGap = 10, kTitle = 34, kLabel = 26, kTextSize = 15;
+  constexpr std::array<float, 3> kSheet{0.16f, 0.16f, 0.16f}, kLight{0.9f, 0.9f, 0.9f};
+  int cell = 0, tile_h = 0;
+  for (const StripTile& t : tiles) {
+    const OIIO::ROI box = IBA::text_size(t.label, kTextSize, kFont);
+    cell = std::max({cell, t.image.width, box.defined() ? box.width() : 0});
+    tile_h = std::max(tile_h, t.image.height);
+  }
+  const int n = int(tiles.size());
+  const StripSize size{n * cell + (n + 1) * kGap, kTitle + tile_h + kLabel + kGap};
+  OIIO::ImageBuf img(OIIO::ImageSpec(size.width, size.height, 3, OIIO::TypeDesc::FLOAT));
+  IBA::fill(img, kSheet);
+  text(img, kGap, kTitle - 12, title, 17, IBA::TextAlignX::Left, IBA::TextAlignY::Baseline, kLight);
+  for (int i = 0; i < n; ++i) {
+    const ocio::Thumbnail& t = tiles[i].image;
+    OIIO::ImageBuf tile(OIIO::ImageSpec(t.width, t.height, 4, OIIO::TypeDesc::UINT8));
+    tile.set_pixels(tile.roi(), OIIO::TypeDesc::UINT8, t.rgba.data());
+    const int x = kGap + i * (cell + kGap);
+    IBA::paste(img, x + (cell - t.width) / 2, kTitle, 0, 0, tile,
+               OIIO::ROI(0, t.width, 0, t.height, 0, 1, 0, 3));
+    text(img, x + cell / 2, kTitle + tile_h + kLabel - 8, tiles[i].label, kTextSize,
+         IBA::TextAlignX::Center, IBA::TextAlignY::Baseline, kLight);
+  }
+  write_png(img, png);
+  return size;
 }
 
 }  // namespace brdfnav::cli

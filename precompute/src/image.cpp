@@ -6,8 +6,6 @@
 
 namespace brdfnav {
 
-namespace {
-
 void check_same_shape(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height)
     throw ImageError("image sizes differ: " + std::to_string(a.width) + "x" +
@@ -19,8 +17,6 @@ void check_same_shape(const Image& a, const Image& b) {
         throw ImageError("image masks (alpha) differ, first at pixel (" + std::to_string(x) + ", " +
                          std::to_string(y) + ")");
 }
-
-}  // namespace
 
 Image compose(const Image& diffuse, const Image& specular, const Rgb& rho_d, const Rgb& rho_s) {
   check_same_shape(diffuse, specular);

@@ -38,6 +38,9 @@ struct Image {
 // the common mask. Throws ImageError when sizes or masks differ.
 Image compose(const Image& diffuse, const Image& specular, const Rgb& rho_d, const Rgb& rho_s);
 
+// Throws ImageError when the sizes or the masks (alpha) differ: what every metric checks first.
+void check_same_shape(const Image& a, const Image& b);
+
 // The metric. Throws ImageError when the sizes or the masks (alpha) differ, or no pixel is covered.
 double image_distance(const Image& a, const Image& b);
 

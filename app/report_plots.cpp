@@ -1,0 +1,137 @@
+#include "validation_report.h"
+
+#include "plot.h"
+
+#include <cstdio>
+
+namespace brdfnav::cli {
+
+namespace {
+
+std::string fixed(double v, int digits) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+struct Writer {
+  const std::filesystem::path& dir;
+  std::vector<ReportFile> files;
+
+  void plot(const std::string& figure, const std::string& file, const PlotSpec& spec,
+            const std::vector<PlotSeries>& series) {
+    write_line_plot(dir / file, spec, series);
+    files.push_back({figure, file, spec.width, spec.height});
+  }
+  void strip(const std::string& figure, const std::string& file, const std::string& title,
+             const std::vector<StripTile>& tiles) {
+    const StripSize size = write_image_strip(dir / file, title, tiles);
+    files.push_back({figure, file, size.width, size.height});
+  }
+};
+
+// Figure 2: every curve scaled onto the straight line the subjects' ratings follow (0 at d = 0.8,
+// 1 at d = 0.99), so that only their shapes differ.
+void plot_fig2(Writer& w, const PellaciniStudy& s) {
+  std::vector<double> linear;
+  for (double d : s.d) linear.push_back((d - s.d.front()) / (s.d.back() - s.d.front()));
+  std::vector<PlotSeries> series;
+  for (std::size_t k = 0; k < s.curves.size(); ++k) {
+    const CumulativeCurve& c = s.curves[k];
+    PlotSeries p{c.metric + " (R^2 " + fixed(c.fit.r2, 3) + ")", s.d, {}, plot_colour(k), true};
+    const double scale = least_squares_scale(c.values, linear);
+    for (double v : c.values) p.y.push_back(scale * v);
+    series.push_back(std::move(p));
+  }
+  series.push_back({"linear in d (Pellacini)", s.d, linear, {0.f, 0.f, 0.f}});
+  w.plot("figure2", "fig2_cumulative.png",
+         {"Fig. 2: cumulative distance along Pellacini's 11 Ward stimuli",
+          "d = 1 - alpha (distinctness of image)", "cumulative distance, least-squares scaled"},
+         series);
+}
+
+// Figure 3: the distances from the sample nearest alpha = 0.07 to all 25, each metric scaled
+// onto the reference map's distances.
+void plot_fig3(Writer& w, const SceneStudy& s) {
+  std::vector<PlotSeries> series;
+  for (std::size_t k = 0; k < s.entries.size(); ++k) {
+    const SceneEntry& e = s.entries[k];
+    PlotSeries p{e.name + " (" + fixed(100 * e.agreement.within, 0) + "% within 20%)",
+                 s.alpha,
+                 {},
+                 plot_colour(k),
+                 true};
+    for (std::size_t j = 0; j < s.alpha.size(); ++j)
+      p.y.push_back(e.agreement.scale *
+                    e.distances(Eigen::Index(s.reference_sample), Eigen::Index(j)));
+    series.push_back(std::move(p));
+  }
+  w.plot("figure3", "fig3_distances.png",
+         {"Fig. 3: distance from Ward alpha = " + fixed(s.alpha[s.reference_sample], 4) +
+              " to 25 samples",
+          "alpha", "distance (scaled to " + s.entries.front().name + ")"},
+         series);
+}
+
+StripTile tile(const Image& image, const std::string& label, const ocio::ColorPipeline& colour) {
+  return {{image.width, image.height,
+           colour.apply(image.rgba.data(), image.width, image.height, ocio::kDisplaySRGB,
+                        ocio::kViewStandard)},
+          label};
+}
+
+// Figures 8 and 9: both cumulative curves (normalised) with the samples each spacing picks, and
+// the two rows of images.
+void plot_spacing(Writer& w, const std::string& figure, const std::string& model,
+                  const char* parameter, int digits, const SpacingStudy& s,
+                  const ocio::ColorPipeline& colour) {
+  const auto normalised = [](const std::vector<double>& c) {
+    std::vector<double> out;
+    for (double v : c) out.push_back(v / c.back());
+    return out;
+  };
+  w.plot(figure, figure + "_cumulative.png",
+         {figure + ": " + model + ", cumulative distance along " + parameter, parameter,
+          "cumulative distance / total"},
+         {{"image metric", s.fine, normalised(s.cumulative_image), plot_colour(0), true},
+          {s.baseline.spacing, s.fine, normalised(s.cumulative_baseline), plot_colour(1), true}});
+  for (const SpacedRow* row : {&s.baseline, &s.image}) {
+    std::vector<StripTile> tiles;
+    for (std::size_t i = 0; i < row->values.size(); ++i)
+      tiles.push_back(
+          tile(row->images[i], parameter + ("=" + fixed(row->values[i], digits)), colour));
+    w.strip(figure, figure + "_" + row->spacing + ".png",
+            model + ", spaced by " + row->spacing + " (CV of image-metric steps " +
+                fixed(row->cv, 2) + ")",
+            tiles);
+  }
+}
+
+void plot_embedding(Writer& w, const EmbeddingStudy& s) {
+  PlotSeries median{"median", {}, {}, plot_colour(0), true};
+  PlotSeries p95{"95th percentile", {}, {}, plot_colour(1), true};
+  for (const EmbeddingErrors& r : s.rows) {
+    median.x.push_back(r.coefficients), median.y.push_back(r.median);
+    p95.x.push_back(r.coefficients), p95.y.push_back(r.p95);
+  }
+  w.plot("embedding", "embedding_error.png",
+         {"Embedded vs exact distance, " + std::to_string(s.pairs) + " random pairs",
+          "coefficients per channel", "relative error", true},
+         {median, p95});
+}
+
+}  // namespace
+
+std::vector<ReportFile> write_report_plots(const std::filesystem::path& dir,
+                                           const ValidationResults& r,
+                                           const ocio::ColorPipeline& colour) {
+  Writer w{dir, {}};
+  plot_fig2(w, r.fig2);
+  plot_fig3(w, r.fig3);
+  plot_spacing(w, "figure8", "Ward", kFig8Parameter, 3, r.fig8, colour);
+  plot_spacing(w, "figure9", "Lafortune n=800", kFig9Parameter, 4, r.fig9, colour);
+  if (r.embedding) plot_embedding(w, *r.embedding);
+  return w.files;
+}
+
+}  // namespace brdfnav::cli

@@ -1,0 +1,224 @@
+#include "validation_report.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstdio>
+#include <sstream>
+
+namespace brdfnav::cli {
+
+namespace {
+
+// The goals of issue #7 and the paper's claim for Figure 3.
+constexpr double kGoalR2 = 0.95;
+constexpr double kPaperWithin = 0.85;
+
+bool fig2_goal(const PellaciniStudy& s) {
+  // curves: cube_root, cielab, rgb, brdf_l2.
+  return s.curves[0].fit.r2 >= kGoalR2 && s.curves[0].fit.r2 > s.curves[2].fit.r2;
+}
+
+// Whether every other natural map (entries 1 .. others) agrees with the reference as the paper's.
+bool fig3_claim(const SceneStudy& s, std::size_t others) {
+  for (std::size_t i = 1; i <= others; ++i)
+    if (s.entries[i].agreement.within <= kPaperWithin) return false;
+  return true;
+}
+
+// --- report.yaml ---------------------------------------------------------------------------------
+
+YAML::Emitter& seq(YAML::Emitter& out, const std::vector<double>& values) {
+  out << YAML::Flow << YAML::BeginSeq;
+  for (double v : values) out << v;
+  return out << YAML::EndSeq;
+}
+
+void emit_fig2(YAML::Emitter& out, const PellaciniStudy& s) {
+  out << YAML::Key << "figure2" << YAML::Value << YAML::BeginMap << YAML::Key << "d";
+  seq(out << YAML::Value, s.d);
+  out << YAML::Key << "white_y" << YAML::Value << s.white_y;
+  out << YAML::Key << "metrics" << YAML::Value << YAML::BeginMap;
+  for (const CumulativeCurve& c : s.curves) {
+    out << YAML::Key << c.metric << YAML::Value << YAML::BeginMap << YAML::Key << "cumulative";
+    seq(out << YAML::Value, c.values);
+    out << YAML::Key << "slope" << YAML::Value << c.fit.slope << YAML::Key << "intercept"
+        << YAML::Value << c.fit.intercept << YAML::Key << "r2" << YAML::Value << c.fit.r2
+        << YAML::EndMap;
+  }
+  out << YAML::EndMap << YAML::Key << "goal_holds" << YAML::Value << fig2_goal(s) << YAML::EndMap;
+}
+
+void emit_fig3(YAML::Emitter& out, const SceneStudy& s, std::size_t others) {
+  out << YAML::Key << "figure3" << YAML::Value << YAML::BeginMap << YAML::Key << "alpha";
+  seq(out << YAML::Value, s.alpha);
+  out << YAML::Key << "reference_alpha" << YAML::Value << s.alpha[s.reference_sample] << YAML::Key
+      << "tolerance" << YAML::Value << s.tolerance;
+  out << YAML::Key << "metrics" << YAML::Value << YAML::BeginMap;
+  for (const SceneEntry& e : s.entries) {
+    out << YAML::Key << e.name << YAML::Value << YAML::BeginMap << YAML::Key << "scale"
+        << YAML::Value << e.agreement.scale << YAML::Key << "within" << YAML::Value
+        << e.agreement.within << YAML::Key << "from_reference";
+    const Eigen::VectorXd row = e.distances.row(Eigen::Index(s.reference_sample));
+    seq(out << YAML::Value, {row.data(), row.data() + row.size()});
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap << YAML::Key << "natural_maps_agree" << YAML::Value << fig3_claim(s, others)
+      << YAML::EndMap;
+}
+
+void emit_spacing(YAML::Emitter& out, const char* figure, const char* parameter,
+                  const SpacingStudy& s) {
+  out << YAML::Key << figure << YAML::Value << YAML::BeginMap << YAML::Key << "parameter"
+      << YAML::Value << parameter << YAML::Key << "fine";
+  seq(out << YAML::Value, s.fine) << YAML::Key << "cumulative_image";
+  seq(out << YAML::Value, s.cumulative_image) << YAML::Key << "cumulative_baseline";
+  seq(out << YAML::Value, s.cumulative_baseline);
+  out << YAML::Key << "rows" << YAML::Value << YAML::BeginMap;
+  for (const SpacedRow* row : {&s.baseline, &s.image}) {
+    out << YAML::Key << row->spacing << YAML::Value << YAML::BeginMap << YAML::Key << "values";
+    seq(out << YAML::Value, row->values) << YAML::Key << "steps";
+    seq(out << YAML::Value, row->steps)
+        << YAML::Key << "cv" << YAML::Value << row->cv << YAML::EndMap;
+  }
+  out << YAML::EndMap << YAML::Key << "image_more_uniform" << YAML::Value
+      << (s.image.cv < s.baseline.cv) << YAML::EndMap;
+}
+
+void emit_embedding(YAML::Emitter& out, const EmbeddingStudy& s) {
+  out << YAML::Key << "embedding" << YAML::Value << YAML::BeginMap << YAML::Key << "pairs"
+      << YAML::Value << s.pairs << YAML::Key << "rows" << YAML::Value << YAML::BeginSeq;
+  for (const EmbeddingErrors& e : s.rows)
+    out << YAML::Flow << YAML::BeginMap << YAML::Key << "coefficients" << YAML::Value
+        << e.coefficients << YAML::Key << "median" << YAML::Value << e.median << YAML::Key << "p95"
+        << YAML::Value << e.p95 << YAML::EndMap;
+  out << YAML::EndSeq << YAML::EndMap;
+}
+
+// --- report.md -----------------------------------------------------------------------------------
+
+std::string num(double v, int digits = 3) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+std::string list(const std::vector<double>& v, int digits) {
+  std::string s;
+  for (double x : v) s += (s.empty() ? "" : ", ") + num(x, digits);
+  return s;
+}
+
+const char* verdict(bool holds) {
+  return holds ? "**holds**" : "**does not hold**";
+}
+
+// Every PNG of `figure`, as Markdown images.
+std::string images(const std::vector<ReportFile>& files, const std::string& figure) {
+  std::string s;
+  for (const ReportFile& f : files)
+    if (f.figure == figure) s += "![" + f.file + "](" + f.file + ")\n\n";
+  return s;
+}
+
+void md_fig2(std::ostringstream& md, const PellaciniStudy& s) {
+  md << "## Figure 2: Pellacini et al.'s gloss stimuli\n\n"
+     << "Isotropic Ward, rho_d = rho_s = 0.1, 11 stimuli d = 1 - alpha = " << list(s.d, 3)
+     << ". Cumulative distance between successive stimuli, fitted by a line in d. CIELAB white: "
+        "Y = "
+     << num(s.white_y, 4) << " (mean luminance of the white Lambertian sphere).\n\n"
+     << "| metric | R^2 | slope | total |\n|---|---|---|---|\n";
+  for (const CumulativeCurve& c : s.curves)
+    md << "| " << c.metric << " | " << num(c.fit.r2, 4) << " | " << num(c.fit.slope, 4) << " | "
+       << num(c.values.back(), 4) << " |\n";
+  md << "\nGoal R^2(cube_root) >= " << kGoalR2
+     << " and R^2(cube_root) > R^2(rgb): " << verdict(fig2_goal(s)) << ".\n\n";
+}
+
+void md_fig3(std::ostringstream& md, const SceneStudy& s, std::size_t others) {
+  md << "## Figure 3: dependence on the environment\n\n25 Ward samples alpha = "
+     << num(s.alpha.front(), 2) << " .. " << num(s.alpha.back(), 2)
+     << " (evenly spaced), all 600 ordered pairs; one least-squares scale per metric onto the "
+        "reference map ("
+     << s.entries.front().name << "); fraction of pairs within " << num(100 * s.tolerance, 0)
+     << "% of the reference.\n\n| metric | scale | within |\n|---|---|---|\n";
+  for (const SceneEntry& e : s.entries)
+    md << "| " << e.name << " | " << num(e.agreement.scale, 4) << " | "
+       << num(100 * e.agreement.within, 1) << "% |\n";
+  md << "\nThe paper: over " << num(100 * kPaperWithin, 0)
+     << "% for the other natural maps: " << verdict(fig3_claim(s, others))
+     << ". The plot shows the distances from alpha = " << num(s.alpha[s.reference_sample], 4)
+     << ".\n\n";
+}
+
+void md_spacing(std::ostringstream& md, const std::string& title, const char* parameter,
+                const SpacingStudy& s) {
+  md << "## " << title << "\n\n"
+     << s.fine.size() << " fine samples of " << parameter << " from " << num(s.fine.front(), 3)
+     << " to " << num(s.fine.back(), 3)
+     << "; each row is 8 samples at equal steps of its cumulative curve. CV is the coefficient "
+        "of variation of the row's successive image-metric steps (0: perfectly uniform).\n\n"
+     << "| spacing | " << parameter << " | CV |\n|---|---|---|\n";
+  for (const SpacedRow* row : {&s.baseline, &s.image})
+    md << "| " << row->spacing << " | " << list(row->values, 4) << " | " << num(row->cv, 3)
+       << " |\n";
+  md << "\nThe image metric's spacing is more uniform: " << verdict(s.image.cv < s.baseline.cv)
+     << ".\n\n";
+}
+
+void md_embedding(std::ostringstream& md, const EmbeddingStudy& s, const std::string& db) {
+  md << "## Embedding\n\nDatabase `" << db << "`: " << s.pairs
+     << " random pairs of materials, relative error |embedded - exact| / exact of the "
+        "embedding truncated to k coefficients per channel.\n\n"
+     << "| k | median | p95 |\n|---|---|---|\n";
+  for (const EmbeddingErrors& e : s.rows)
+    md << "| " << e.coefficients << " | " << num(e.median, 4) << " | " << num(e.p95, 4) << " |\n";
+  md << "\n";
+}
+
+}  // namespace
+
+std::string report_yaml(const ValidationResults& r, const std::vector<ReportFile>& files) {
+  YAML::Emitter out;
+  out.SetDoublePrecision(6);
+  out << YAML::BeginMap << YAML::Key << "brdfnav_validation" << YAML::Value << 1;
+  out << YAML::Key << "settings" << YAML::Value << YAML::BeginMap << YAML::Key << "resolution"
+      << YAML::Value << r.resolution << YAML::Key << "reference_env" << YAML::Value
+      << r.reference_env << YAML::Key << "envs" << YAML::Value << YAML::Flow << r.other_envs;
+  if (!r.database.empty()) out << YAML::Key << "database" << YAML::Value << r.database;
+  out << YAML::EndMap;
+  emit_fig2(out, r.fig2);
+  emit_fig3(out, r.fig3, r.other_envs.size());
+  emit_spacing(out, "figure8", kFig8Parameter, r.fig8);
+  emit_spacing(out, "figure9", kFig9Parameter, r.fig9);
+  if (r.embedding) emit_embedding(out, *r.embedding);
+  out << YAML::Key << "plots" << YAML::Value << YAML::BeginSeq;
+  for (const ReportFile& f : files)
+    out << YAML::Flow << YAML::BeginMap << YAML::Key << "figure" << YAML::Value << f.figure
+        << YAML::Key << "file" << YAML::Value << f.file << YAML::Key << "width" << YAML::Value
+        << f.width << YAML::Key << "height" << YAML::Value << f.height << YAML::EndMap;
+  out << YAML::EndSeq << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+std::string report_markdown(const ValidationResults& r, const std::vector<ReportFile>& files) {
+  std::ostringstream md;
+  md << "# brdfnav validation report\n\nResolution " << r.resolution << " x " << r.resolution
+     << ", sphere, reference environment `" << r.reference_env << "`; compared with";
+  for (const std::string& env : r.other_envs) md << " `" << env << "`";
+  md << " and a constant environment. Every number is in report.yaml.\n\n";
+  md_fig2(md, r.fig2);
+  md << images(files, "figure2");
+  md_fig3(md, r.fig3, r.other_envs.size());
+  md << images(files, "figure3");
+  md_spacing(md, "Figure 8: Ward, alpha", kFig8Parameter, r.fig8);
+  md << images(files, "figure8");
+  md_spacing(md, "Figure 9: Lafortune, cz at n = 800", kFig9Parameter, r.fig9);
+  md << images(files, "figure9");
+  if (r.embedding) {
+    md_embedding(md, *r.embedding, r.database);
+    md << images(files, "embedding");
+  }
+  return md.str();
+}
+
+}  // namespace brdfnav::cli

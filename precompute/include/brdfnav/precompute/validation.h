@@ -1,0 +1,166 @@
+// The paper's evaluation of its metric (section 2.2, Figures 2, 3, 8 and 9) and of the embedding
+// (section 3.2), as computations on rendered images: `brdfnav validate` reports and plots them
+// (docs/VALIDATION.md). Every study renders with the renderer it is given, so its scale (the
+// resolution) is the caller's choice.
+#pragma once
+
+#include <brdfnav/core/material.h>
+#include <brdfnav/precompute/database.h>
+#include <brdfnav/precompute/image.h>
+#include <brdfnav/precompute/render.h>
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace brdfnav {
+
+// --- Metrics the paper compares its own (image_distance) with --------------------------------
+
+// RMS over covered pixels and the 3 channels of the linear difference A - B (no cube root).
+double rgb_distance(const Image& a, const Image& b);
+// RMS over covered pixels of the CIE 1976 colour difference (lab_from_rec709 in core/cielab.h)
+// with the D65 white scaled to luminance `white_y`. HDR pixels brighter than the white get
+// L* > 100, which the cube-root law extends to without a break.
+double lab_distance(const Image& a, const Image& b, double white_y);
+// Mean Rec. 709 luminance over the covered pixels (the CIELAB white of a scene: the diffuse
+// image's, i.e. what a white Lambertian sphere shows on average).
+double mean_luminance(const Image& image);
+// The cosine-weighted BRDF-space L2 distance (paper, section 2; fit.h's metric):
+//   sqrt(sum_k w_k mean_c |f_A,c - f_B,c|^2)
+// over make_fit_quadrature() of the material whose own norm is larger, which resolves the sharper
+// lobe (the broader one is covered by the quadrature's cosine half). Delta terms are left out.
+double brdf_distance(const Material& a, const Material& b);
+
+// --- Fitting helpers ---------------------------------------------------------------------------
+
+struct LineFit {
+  double intercept = 0, slope = 0;
+  double r2 = 0;  // coefficient of determination (1 for a perfect line)
+};
+// Least-squares line y = intercept + slope x. Needs two distinct x.
+LineFit fit_line(std::span<const double> x, std::span<const double> y);
+// The s minimising sum (s v_i - r_i)^2; 0 when v is all zero.
+double least_squares_scale(std::span<const double> values, std::span<const double> reference);
+// {0, s0, s0 + s1, ...}: the distance walked along a series of steps.
+std::vector<double> cumulative(std::span<const double> steps);
+// Standard deviation / mean (population); 0 for an empty series.
+double coefficient_of_variation(std::span<const double> values);
+// `count` abscissae that split a non-decreasing cumulative curve (values at `x`) into equal
+// steps, by linear interpolation between the samples; the first and last are x's ends.
+std::vector<double> equal_steps(std::span<const double> x, std::span<const double> curve,
+                                int count);
+
+// --- Figure 2: Pellacini et al.'s gloss stimuli ------------------------------------------------
+
+// Isotropic Ward with alpha_x = alpha_y = alpha and grey rho_d = rho_s = 0.1, as in the figures.
+Material ward_sample(double alpha);
+
+struct CumulativeCurve {
+  std::string metric;          // cube_root, cielab, rgb, brdf_l2
+  std::vector<double> values;  // cumulative distance at each stimulus, from 0
+  LineFit fit;                 // against d
+};
+
+struct PellaciniStudy {
+  std::vector<double> d;                // distinctness of image d = 1 - alpha, 0.80 .. 0.99
+  double white_y = 0;                   // the CIELAB white (mean_luminance of the diffuse image)
+  std::vector<CumulativeCurve> curves;  // cube_root, cielab, rgb, brdf_l2, in that order
+};
+
+// 11 stimuli evenly spaced in d from 0.8 to 0.99; the cumulative distance of successive stimuli
+// under each metric, and how straight each curve is in d (the subjects' ratings are linear in d).
+PellaciniStudy pellacini_study(Renderer& renderer);
+
+// --- Figure 3: dependence on the environment ---------------------------------------------------
+
+// Every ordered pair's distance between `samples` (symmetric, zero diagonal).
+Eigen::MatrixXd image_distances(Renderer& renderer, const std::vector<Material>& samples);
+Eigen::MatrixXd brdf_distances(const std::vector<Material>& samples);
+
+struct Agreement {
+  double scale = 0;   // least-squares scale of `other` onto `reference` over the n (n - 1) pairs
+  double within = 0;  // fraction of pairs with |scale * other - reference| <= tolerance * reference
+};
+Agreement compare_distances(const Eigen::MatrixXd& reference, const Eigen::MatrixXd& other,
+                            double tolerance);
+
+struct NamedRenderer {
+  std::string name;
+  Renderer* renderer;
+};
+
+struct SceneEntry {
+  std::string name;           // the renderer's name, or "brdf_l2"
+  Eigen::MatrixXd distances;  // unscaled
+  Agreement agreement;        // with the first renderer's distances
+};
+
+struct SceneStudy {
+  std::vector<double> alpha;         // 25 samples, 0.01 .. 0.36 evenly spaced
+  std::size_t reference_sample = 0;  // the sample nearest alpha = 0.07 (the paper's Figure 3)
+  double tolerance = 0.2;
+  std::vector<SceneEntry> entries;  // one per renderer, in order, then brdf_l2
+};
+
+// renderers[0] is the reference environment; every other one (e.g. a constant environment,
+// which the paper expects to fail) and the BRDF-space metric are compared with it.
+SceneStudy scene_study(const std::vector<NamedRenderer>& renderers);
+
+// --- Figures 8 and 9: uniform spacing ----------------------------------------------------------
+
+// A one-parameter family of materials (e.g. Ward's alpha, Lafortune's cz at fixed n).
+using MaterialFamily = std::function<Material(double)>;
+
+// What the image metric's spacing is compared with: equal steps of the BRDF-space L2 metric
+// (Figure 8) or of the parameter itself (Figure 9).
+enum class Baseline { brdf_l2, linear };
+
+struct SpacedRow {
+  std::string spacing;         // brdf_l2, linear or image
+  std::vector<double> values;  // the parameter of each sample
+  std::vector<Image> images;
+  std::vector<double> steps;  // image_distance between successive samples
+  double cv = 0;              // coefficient_of_variation(steps): 0 is perfectly uniform
+};
+
+struct SpacingStudy {
+  std::vector<double> fine;              // the parameter grid the curves are measured on
+  std::vector<double> cumulative_image;  // along `fine`
+  std::vector<double> cumulative_baseline;
+  SpacedRow baseline, image;
+};
+
+// Measures both cumulative curves on `fine` (increasing), places `count` samples at equal steps
+// of each, renders the two rows and measures their image-metric steps.
+SpacingStudy spacing_study(Renderer& renderer, const MaterialFamily& family,
+                           const std::vector<double>& fine, Baseline baseline, int count);
+
+// --- The embedding (section 3.2) ---------------------------------------------------------------
+
+// The distance between two embeddings keeping only the first `k` coefficients of each channel
+// (ModelEmbedding::embed's layout: three blocks of components() coefficients).
+double truncated_distance(const Eigen::VectorXf& a, const Eigen::VectorXf& b, int k);
+
+struct EmbeddingErrors {
+  int coefficients = 0;        // k per channel
+  double median = 0, p95 = 0;  // of |embedded - exact| / exact
+};
+
+struct EmbeddingStudy {
+  int pairs = 0;
+  std::vector<EmbeddingErrors> rows;  // k = 4, 8, 16, ... and the database's full count
+};
+
+// `pairs` pairs of random materials of the database's models (parameters uniform in grid
+// coordinates, rho_d in [0, 0.5] and rho_s in [0, 1] per channel, from a fixed seed): the
+// relative error of the embedded distance against the exact image_distance of renderings by
+// `renderer`, which must match the database (its env, scene and resolution).
+EmbeddingStudy embedding_study(const Database& db, Renderer& renderer, int pairs,
+                               std::uint32_t seed = 1);
+
+}  // namespace brdfnav

@@ -1,0 +1,330 @@
+#include <brdfnav/precompute/validation.h>
+
+#include <brdfnav/core/cielab.h>
+#include <brdfnav/precompute/fit.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <stdexcept>
+
+namespace brdfnav {
+
+namespace {
+
+// sqrt(mean over covered pixels of squared(a_px, b_px)), after the metric's shape checks.
+template <typename F>
+double rms_over_covered(const Image& a, const Image& b, F squared) {
+  check_same_shape(a, b);
+  double sum = 0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
+    if (a.rgba[i + 3] <= 0.5f) continue;
+    sum += squared(&a.rgba[i], &b.rgba[i]);
+    ++count;
+  }
+  if (count == 0) throw ImageError("the images cover no pixel");
+  return std::sqrt(sum / double(count));
+}
+
+// sum_k w_k mean_c |f(k) - g(k)|^2 over the quadrature (g may be null: the norm of f).
+double weighted_square(const FitQuadrature& q, const Closure& f, const Closure* g) {
+  double sum = 0;
+  for (std::size_t k = 0; k < q.weight.size(); ++k) {
+    Rgb d = f.eval(q.wi[k], q.wo[k]);
+    if (g) d -= g->eval(q.wi[k], q.wo[k]);
+    sum += q.weight[k] * d.square().mean();
+  }
+  return sum;
+}
+
+// Dense enough that the Ward lobes of the figures (alpha >= 0.01) are resolved at every wo.
+constexpr int kBrdfQuadratureWo = 32, kBrdfQuadratureWi = 256;
+
+// The q-quantile (0..1) by linear interpolation between order statistics.
+double quantile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  const double pos = q * double(v.size() - 1);
+  const std::size_t i = static_cast<std::size_t>(pos);
+  if (i + 1 >= v.size()) return v.back();
+  return v[i] + (pos - double(i)) * (v[i + 1] - v[i]);
+}
+
+std::vector<Image> render_all(Renderer& renderer, const std::vector<Material>& samples) {
+  std::vector<Image> images;
+  images.reserve(samples.size());
+  for (const Material& m : samples) images.push_back(renderer.render(m));
+  return images;
+}
+
+// The symmetric matrix of distance(i, j) over n samples, zero on the diagonal.
+template <typename F>
+Eigen::MatrixXd pairwise(std::size_t n, F distance) {
+  Eigen::MatrixXd d = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      d(Eigen::Index(i), Eigen::Index(j)) = d(Eigen::Index(j), Eigen::Index(i)) = distance(i, j);
+  return d;
+}
+
+std::vector<double> successive(const std::vector<Image>& images,
+                               double (*metric)(const Image&, const Image&)) {
+  std::vector<double> steps;
+  for (std::size_t i = 1; i < images.size(); ++i) steps.push_back(metric(images[i - 1], images[i]));
+  return steps;
+}
+
+// A material of `e`'s model with parameters uniform in grid coordinates and random colours.
+Material random_material(const ModelEmbedding& e, std::mt19937& rng) {
+  const auto uniform = [&](double lo, double hi) {
+    return lo + (hi - lo) * (double(rng()) + 0.5) / 4294967296.0;
+  };
+  Material m = default_material(e.model());
+  for (std::size_t d = 0; d < e.grid().dimensions(); ++d)
+    m.params[d] = e.grid().value_at(d, uniform(0, double(e.grid().axis(d).size() - 1)));
+  for (int c = 0; c < 3; ++c) m.rho_d[c] = uniform(0, 0.5), m.rho_s[c] = uniform(0, 1);
+  return m;
+}
+
+}  // namespace
+
+double rgb_distance(const Image& a, const Image& b) {
+  return rms_over_covered(a, b, [](const float* p, const float* q) {
+    double s = 0;
+    for (int c = 0; c < 3; ++c) s += (double(p[c]) - q[c]) * (double(p[c]) - q[c]);
+    return s / 3;
+  });
+}
+
+double lab_distance(const Image& a, const Image& b, double white_y) {
+  if (!(white_y > 0)) throw ImageError("lab_distance: the white's luminance must be positive");
+  return rms_over_covered(a, b, [&](const float* p, const float* q) {
+    const Rgb a(p[0], p[1], p[2]), b(q[0], q[1], q[2]);
+    return (lab_from_rec709(a / white_y) - lab_from_rec709(b / white_y)).squaredNorm();
+  });
+}
+
+double mean_luminance(const Image& image) {
+  double sum = 0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+    if (image.rgba[i + 3] <= 0.5f) continue;
+    sum += luminance(Rgb(image.rgba[i], image.rgba[i + 1], image.rgba[i + 2]));
+    ++count;
+  }
+  if (count == 0) throw ImageError("the image covers no pixel");
+  return sum / double(count);
+}
+
+double brdf_distance(const Material& a, const Material& b) {
+  const Closure fa = make_closure(a), fb = make_closure(b);
+  const FitQuadrature qa = make_fit_quadrature(fa.lobe(), kBrdfQuadratureWo, kBrdfQuadratureWi);
+  const FitQuadrature qb = make_fit_quadrature(fb.lobe(), kBrdfQuadratureWo, kBrdfQuadratureWi);
+  const bool a_sharper = weighted_square(qa, fa, nullptr) >= weighted_square(qb, fb, nullptr);
+  return std::sqrt(weighted_square(a_sharper ? qa : qb, fa, &fb));
+}
+
+LineFit fit_line(std::span<const double> x, std::span<const double> y) {
+  const double n = double(x.size());
+  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n;
+  const double my = std::accumulate(y.begin(), y.end(), 0.0) / n;
+  double sxx = 0, sxy = 0, syy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sxx += (x[i] - mx) * (x[i] - mx);
+    sxy += (x[i] - mx) * (y[i] - my);
+    syy += (y[i] - my) * (y[i] - my);
+  }
+  if (!(sxx > 0)) throw std::invalid_argument("fit_line: needs two distinct x");
+  LineFit fit;
+  fit.slope = sxy / sxx;
+  fit.intercept = my - fit.slope * mx;
+  // R^2 = 1 - SS_res / SS_tot; with SS_res = syy - slope * sxy for a least-squares line.
+  fit.r2 = syy > 0 ? 1 - (syy - fit.slope * sxy) / syy : 1;
+  return fit;
+}
+
+double least_squares_scale(std::span<const double> values, std::span<const double> reference) {
+  double vv = 0, vr = 0;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    vv += values[i] * values[i], vr += values[i] * reference[i];
+  return vv > 0 ? vr / vv : 0;
+}
+
+std::vector<double> cumulative(std::span<const double> steps) {
+  std::vector<double> out{0};
+  for (double s : steps) out.push_back(out.back() + s);
+  return out;
+}
+
+double coefficient_of_variation(std::span<const double> values) {
+  if (values.empty()) return 0;
+  const double n = double(values.size());
+  const double mean = std::accumulate(values.begin(), values.end(), 0.0) / n;
+  double var = 0;
+  for (double v : values) var += (v - mean) * (v - mean);
+  return mean != 0 ? std::sqrt(var / n) / mean : 0;
+}
+
+std::vector<double> equal_steps(std::span<const double> x, std::span<const double> curve,
+                                int count) {
+  std::vector<double> out;
+  std::size_t i = 0;
+  for (int j = 0; j < count; ++j) {
+    const double t = curve.front() + (curve.back() - curve.front()) * j / (count - 1);
+    while (i + 2 < curve.size() && curve[i + 1] < t) ++i;
+    const double span = curve[i + 1] - curve[i];
+    const double frac = span > 0 ? std::clamp((t - curve[i]) / span, 0.0, 1.0) : 0.0;
+    out.push_back(x[i] + frac * (x[i + 1] - x[i]));
+  }
+  out.front() = x.front(), out.back() = x.back();
+  return out;
+}
+
+Material ward_sample(double alpha) {
+  Material m = default_material(ModelId::ward);
+  m.params = {alpha, alpha};
+  m.rho_d = Rgb::Constant(0.1), m.rho_s = Rgb::Constant(0.1);
+  return m;
+}
+
+PellaciniStudy pellacini_study(Renderer& renderer) {
+  constexpr int kStimuli = 11;
+  PellaciniStudy study;
+  std::vector<Material> samples;
+  for (int i = 0; i < kStimuli; ++i) {
+    study.d.push_back(0.8 + 0.19 * i / (kStimuli - 1));
+    samples.push_back(ward_sample(1 - study.d.back()));
+  }
+  const std::vector<Image> images = render_all(renderer, samples);
+  study.white_y = mean_luminance(renderer.diffuse());
+
+  std::vector<double> lab, brdf;
+  for (std::size_t i = 1; i < samples.size(); ++i) {
+    lab.push_back(lab_distance(images[i - 1], images[i], study.white_y));
+    brdf.push_back(brdf_distance(samples[i - 1], samples[i]));
+  }
+  const std::pair<const char*, std::vector<double>> steps[] = {
+      {"cube_root", successive(images, image_distance)},
+      {"cielab", lab},
+      {"rgb", successive(images, rgb_distance)},
+      {"brdf_l2", brdf}};
+  for (const auto& [name, s] : steps) {
+    CumulativeCurve curve{name, cumulative(s), {}};
+    curve.fit = fit_line(study.d, curve.values);
+    study.curves.push_back(std::move(curve));
+  }
+  return study;
+}
+
+Eigen::MatrixXd image_distances(Renderer& renderer, const std::vector<Material>& samples) {
+  const std::vector<Image> images = render_all(renderer, samples);
+  return pairwise(samples.size(), [&](std::size_t i, std::size_t j) {
+    return image_distance(images[i], images[j]);
+  });
+}
+
+Eigen::MatrixXd brdf_distances(const std::vector<Material>& samples) {
+  return pairwise(samples.size(), [&](std::size_t i, std::size_t j) {
+    return brdf_distance(samples[i], samples[j]);
+  });
+}
+
+Agreement compare_distances(const Eigen::MatrixXd& reference, const Eigen::MatrixXd& other,
+                            double tolerance) {
+  std::vector<double> r, o;
+  for (Eigen::Index i = 0; i < reference.rows(); ++i)
+    for (Eigen::Index j = 0; j < reference.cols(); ++j)
+      if (i != j) r.push_back(reference(i, j)), o.push_back(other(i, j));
+  Agreement a;
+  a.scale = least_squares_scale(o, r);
+  std::size_t within = 0;
+  for (std::size_t k = 0; k < r.size(); ++k)
+    if (std::abs(a.scale * o[k] - r[k]) <= tolerance * r[k]) ++within;
+  a.within = r.empty() ? 0 : double(within) / double(r.size());
+  return a;
+}
+
+SceneStudy scene_study(const std::vector<NamedRenderer>& renderers) {
+  constexpr int kSamples = 25;
+  SceneStudy study;
+  std::vector<Material> samples;
+  for (int i = 0; i < kSamples; ++i) {
+    study.alpha.push_back(0.01 + 0.35 * i / (kSamples - 1));
+    samples.push_back(ward_sample(study.alpha.back()));
+    if (std::abs(study.alpha.back() - 0.07) < std::abs(study.alpha[study.reference_sample] - 0.07))
+      study.reference_sample = study.alpha.size() - 1;
+  }
+  for (const NamedRenderer& r : renderers)
+    study.entries.push_back({r.name, image_distances(*r.renderer, samples), {}});
+  study.entries.push_back({"brdf_l2", brdf_distances(samples), {}});
+  for (SceneEntry& e : study.entries)
+    e.agreement = compare_distances(study.entries.front().distances, e.distances, study.tolerance);
+  return study;
+}
+
+SpacingStudy spacing_study(Renderer& renderer, const MaterialFamily& family,
+                           const std::vector<double>& fine, Baseline baseline, int count) {
+  SpacingStudy study;
+  study.fine = fine;
+  std::vector<Material> samples;
+  for (double x : fine) samples.push_back(family(x));
+  study.cumulative_image = cumulative(successive(render_all(renderer, samples), image_distance));
+  std::vector<double> base_steps;
+  for (std::size_t i = 1; i < fine.size(); ++i)
+    base_steps.push_back(baseline == Baseline::brdf_l2 ? brdf_distance(samples[i - 1], samples[i])
+                                                       : fine[i] - fine[i - 1]);
+  study.cumulative_baseline = cumulative(base_steps);
+
+  const auto row = [&](std::string name, const std::vector<double>& curve) {
+    SpacedRow r{std::move(name), equal_steps(fine, curve, count), {}, {}, 0};
+    std::vector<Material> materials;
+    for (double x : r.values) materials.push_back(family(x));
+    r.images = render_all(renderer, materials);
+    r.steps = successive(r.images, image_distance);
+    r.cv = coefficient_of_variation(r.steps);
+    return r;
+  };
+  study.baseline =
+      row(baseline == Baseline::brdf_l2 ? "brdf_l2" : "linear", study.cumulative_baseline);
+  study.image = row("image", study.cumulative_image);
+  return study;
+}
+
+double truncated_distance(const Eigen::VectorXf& a, const Eigen::VectorXf& b, int k) {
+  const Eigen::Index full = a.size() / 3;
+  double sum = 0;
+  for (Eigen::Index c = 0; c < 3; ++c)
+    sum += (a.segment(c * full, k) - b.segment(c * full, k)).squaredNorm();
+  return std::sqrt(sum);
+}
+
+EmbeddingStudy embedding_study(const Database& db, Renderer& renderer, int pairs,
+                               std::uint32_t seed) {
+  std::vector<const ModelEmbedding*> models;
+  for (const ModelInfo& info : brdfnav::models())
+    if (const ModelEmbedding* e = db.embedding(info.id)) models.push_back(e);
+  if (models.empty()) throw DatabaseError(db.dir().string() + ": holds no model");
+  const int full = models.front()->components();
+  std::vector<int> ks;
+  for (int k = 4; k < full; k *= 2) ks.push_back(k);
+  ks.push_back(full);
+
+  std::mt19937 rng(seed);
+  std::vector<std::vector<double>> errors(ks.size());
+  for (int p = 0; p < pairs; ++p) {
+    const ModelEmbedding& ea = *models[rng() % models.size()];
+    const ModelEmbedding& eb = *models[rng() % models.size()];
+    const Material a = random_material(ea, rng), b = random_material(eb, rng);
+    const double exact = image_distance(renderer.render(a), renderer.render(b));
+    const Eigen::VectorXf va = ea.embed(a), vb = eb.embed(b);
+    for (std::size_t i = 0; i < ks.size(); ++i)
+      errors[i].push_back(std::abs(truncated_distance(va, vb, ks[i]) - exact) / exact);
+  }
+  EmbeddingStudy study{pairs, {}};
+  for (std::size_t i = 0; i < ks.size(); ++i)
+    study.rows.push_back({ks[i], quantile(errors[i], 0.5), quantile(errors[i], 0.95)});
+  return study;
+}
+
+}  // namespace brdfnav

@@ -1,0 +1,177 @@
+// `brdfnav validate` end to end at a small scale: the report's structure (every figure and key of
+// report.yaml, every PNG readable at the size the report gives), the claims that already hold at
+// 24 x 24, and one clear error line for each kind of bad input.
+#include "app/cli_runner.h"
+
+#include <brdfnav/precompute/image.h>
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <unistd.h>
+#include <map>
+#include <set>
+
+namespace brdfnav::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("brdfnav_cli_validate_" + std::to_string(::getpid()) + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+// The lines of stderr that report an error (warnings, e.g. clamped texels, may come first).
+std::vector<std::string> error_lines(const std::string& err) {
+  std::vector<std::string> lines;
+  std::istringstream in(err);
+  for (std::string line; std::getline(in, line);)
+    if (line.find("error") != std::string::npos) lines.push_back(line);
+  return lines;
+}
+
+void expect_sequence(const YAML::Node& node, std::size_t size, const std::string& what) {
+  ASSERT_TRUE(node.IsSequence()) << what;
+  EXPECT_EQ(node.size(), size) << what;
+}
+
+void check_fig2(const YAML::Node& f) {
+  expect_sequence(f["d"], 11, "figure2.d");
+  EXPECT_GT(f["white_y"].as<double>(), 0);
+  for (const char* m : {"cube_root", "cielab", "rgb", "brdf_l2"}) {
+    const YAML::Node c = f["metrics"][m];
+    ASSERT_TRUE(c.IsMap()) << m;
+    expect_sequence(c["cumulative"], 11, m);
+    for (std::size_t i = 1; i < 11; ++i)
+      EXPECT_GT(c["cumulative"][i].as<double>(), c["cumulative"][i - 1].as<double>()) << m;
+    for (const char* k : {"slope", "intercept", "r2"}) EXPECT_TRUE(c[k].IsScalar()) << m << k;
+  }
+  EXPECT_TRUE(f["goal_holds"].IsScalar());
+  // Holds at 24 x 24 already: the cube root straightens the curve compared with plain RGB.
+  EXPECT_GT(f["metrics"]["cube_root"]["r2"].as<double>(), f["metrics"]["rgb"]["r2"].as<double>());
+}
+
+void check_fig3(const YAML::Node& f) {
+  expect_sequence(f["alpha"], 25, "figure3.alpha");
+  EXPECT_NEAR(f["reference_alpha"].as<double>(), 0.07, 0.0075);
+  EXPECT_EQ(f["tolerance"].as<double>(), 0.2);
+  std::map<std::string, double> within;
+  for (const char* m : {"interior", "forest", "courtyard", "uniform", "brdf_l2"}) {
+    const YAML::Node e = f["metrics"][m];
+    ASSERT_TRUE(e.IsMap()) << m;
+    EXPECT_GT(e["scale"].as<double>(), 0) << m;
+    expect_sequence(e["from_reference"], 25, m);
+    within[m] = e["within"].as<double>();
+  }
+  EXPECT_EQ(within["interior"], 1.0);
+  EXPECT_TRUE(f["natural_maps_agree"].IsScalar());
+  // The constant environment and the BRDF-space metric agree less than any natural map.
+  for (const char* natural : {"forest", "courtyard"})
+    for (const char* poor : {"uniform", "brdf_l2"})
+      EXPECT_LT(within[poor], within[natural]) << poor << " vs " << natural;
+}
+
+void check_spacing(const YAML::Node& f, const char* parameter, const char* baseline) {
+  EXPECT_EQ(f["parameter"].as<std::string>(), parameter);
+  ASSERT_TRUE(f["fine"].IsSequence());
+  expect_sequence(f["cumulative_image"], f["fine"].size(), "cumulative_image");
+  expect_sequence(f["cumulative_baseline"], f["fine"].size(), "cumulative_baseline");
+  for (const char* row : {baseline, "image"}) {
+    const YAML::Node r = f["rows"][row];
+    ASSERT_TRUE(r.IsMap()) << row;
+    expect_sequence(r["values"], 8, row);
+    expect_sequence(r["steps"], 7, row);
+    EXPECT_GE(r["cv"].as<double>(), 0) << row;
+  }
+  // Holds at any scale: the image metric's own spacing is the more uniform in that metric.
+  EXPECT_TRUE(f["image_more_uniform"].as<bool>()) << parameter;
+}
+
+void check_embedding(const YAML::Node& f) {
+  EXPECT_EQ(f["pairs"].as<int>(), 6);
+  ASSERT_TRUE(f["rows"].IsSequence());
+  ASSERT_GE(f["rows"].size(), 2u);
+  for (const YAML::Node& row : f["rows"]) {
+    EXPECT_GT(row["coefficients"].as<int>(), 0);
+    EXPECT_GE(row["p95"].as<double>(), row["median"].as<double>());
+  }
+}
+
+// Every plot the report lists is a readable PNG of the listed size; every figure has one.
+void check_plots(const fs::path& dir, const YAML::Node& plots) {
+  ASSERT_TRUE(plots.IsSequence());
+  std::set<std::string> figures;
+  for (const YAML::Node& p : plots) {
+    const fs::path file = dir / p["file"].as<std::string>();
+    const Image img = read_image(file);
+    EXPECT_EQ(img.width, p["width"].as<int>()) << file;
+    EXPECT_EQ(img.height, p["height"].as<int>()) << file;
+    figures.insert(p["figure"].as<std::string>());
+  }
+  EXPECT_EQ(figures,
+            (std::set<std::string>{"figure2", "figure3", "figure8", "figure9", "embedding"}));
+}
+
+// One run with a tiny database, checked as a whole: the studies are the slow part.
+TEST(CliValidate, WritesEveryFigureAtSmallScale) {
+  const fs::path root = scratch("_run"), db = root / "db", out = root / "report";
+  auto r = run_cli("precompute --profile test --res 8 --out " + db.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_cli("validate --res 24 --pairs 6 --db " + db.string() + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  for (const auto& entry : fs::directory_iterator(out))
+    EXPECT_NE(entry.path().filename().string()[0], '.') << "left behind: " << entry.path();
+  const std::string md = read_text(out / "report.md");
+  for (const char* heading :
+       {"## Figure 2", "## Figure 3", "## Figure 8", "## Figure 9", "## Embedding"})
+    EXPECT_NE(md.find(heading), std::string::npos) << heading;
+
+  const YAML::Node report = YAML::LoadFile((out / "report.yaml").string());
+  EXPECT_EQ(report["brdfnav_validation"].as<int>(), 1);
+  EXPECT_EQ(report["settings"]["resolution"].as<int>(), 24);
+  check_fig2(report["figure2"]);
+  check_fig3(report["figure3"]);
+  check_spacing(report["figure8"], "alpha", "brdf_l2");
+  check_spacing(report["figure9"], "cz", "linear");
+  check_embedding(report["embedding"]);
+  check_plots(out, report["plots"]);
+  fs::remove_all(root);
+}
+
+// A failing run: non-zero exit and exactly one error line, naming `culprit`.
+void expect_one_error(const std::string& args, const std::string& culprit) {
+  const auto r = run_cli("validate --res 8 " + args);
+  EXPECT_NE(r.exit_code, 0);
+  const auto errors = error_lines(r.err);
+  ASSERT_EQ(errors.size(), 1u) << r.err;
+  EXPECT_NE(errors[0].find(culprit), std::string::npos) << r.err;
+}
+
+TEST(CliValidate, NamesAMissingEnvironmentMap) {
+  const fs::path out = scratch("_env");
+  expect_one_error("--env /nonexistent/sky.exr --out " + out.string(), "/nonexistent/sky.exr");
+  EXPECT_FALSE(fs::exists(out)) << "a failed run leaves nothing behind";
+}
+
+TEST(CliValidate, NamesABadDatabase) {
+  const fs::path out = scratch("_db");
+  expect_one_error("--db /nonexistent/db --out " + out.string(), "/nonexistent/db");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(CliValidate, NamesAnUnwritableOutputDirectory) {
+  // Below a regular file: no directory can be made there, whoever runs the test (even root).
+  const fs::path root = scratch("_out");
+  fs::create_directories(root);
+  std::ofstream(root / "file") << "x";
+  const fs::path out = root / "file" / "report";
+  expect_one_error("--out " + out.string(), "--out " + out.string());
+  fs::remove_all(root);
+}
+
+}  // namespace
+}  // namespace brdfnav::test
