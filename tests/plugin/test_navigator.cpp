@@ -349,6 +349,29 @@ TEST(Navigator, RejectsQueriesItCannotAnswer) {
   EXPECT_THROW(Navigator::open("/nonexistent/brdfnav-db"), DatabaseError);
 }
 
+// A database of two models: the others cannot be queried, and the models tab offers only what
+// is there.
+TEST(Navigator, AnswersOnlyForTheModelsOfItsDatabase) {
+  const std::filesystem::path dir = test::NavigationDatabase::get().dir().parent_path() / "two";
+  Profile profile = make_profile("test");
+  profile.grids.erase(profile.grids.begin() + 2, profile.grids.end());  // blinn_phong, ward
+  const EnvMap env = EnvMap::load(kDefaultEnvPath, {}, [](const std::string&) {});
+  precompute_database({profile, dir, false, 0, {}}, env, Scene::sphere());
+  const Navigator two = Navigator::open(dir);
+  try {
+    two.neighbors(default_material(ModelId::he), 0.01, Tab::lobe);
+    ADD_FAILURE() << "queried a model the database does not hold";
+  } catch (const NavigatorError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("model 'he' is not in the database"));
+  }
+  Material m = default_material(ModelId::ward);
+  m.rho_s = Rgb::Constant(0.5);
+  for (const Neighbor& n : two.neighbors(m, 0.02, Tab::models))
+    EXPECT_EQ(n.material.model, ModelId::blinn_phong);
+  ASSERT_EQ(two.equivalents(m).size(), 1u);
+  for (const Neighbor& n : two.gallery(4)) EXPECT_LE(static_cast<int>(n.material.model), 1);
+}
+
 TEST(NavigationYaml, NeighbourListsReadBackWithTheirStableKeys) {
   const Material m = parse_material_spec("lafortune:cz=0.57,n=300,rho_d=0.1/0.2/0.3,rho_s=0.5");
   std::vector<Neighbor> all;
