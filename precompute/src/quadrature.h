@@ -39,8 +39,12 @@ class Quadrature {
  public:
   Quadrature(const EnvPyramid& env, const Kernel& kernel, const KernelShape& shape,
              const RenderQuality& quality, Visible visible = {})
-      : env_(env), kernel_(kernel), peak_(shape.peak), major_(shape.major),
-        minor_(shape.peak.cross(shape.major)), visible_(visible) {
+      : env_(env),
+        kernel_(kernel),
+        peak_(shape.peak),
+        major_(shape.major),
+        minor_(shape.peak.cross(shape.major)),
+        visible_(visible) {
     const double wide = shape.channel_scale.maxCoeff();
     major_width_ = shape.major_width * wide;
     minor_width_ = shape.minor_width * wide;

@@ -190,10 +190,10 @@ void Renderer::set_progress(ProgressSink progress) {
 
 const Image& Renderer::diffuse() {
   if (!impl_->diffuse) {
-    impl_->diffuse = impl_->render_pass([&](const SurfacePoint& p, std::size_t,
-                                            QuadratureScratch& s) {
-      return impl_->diffuse_pixel(p, s);
-    });
+    impl_->diffuse =
+        impl_->render_pass([&](const SurfacePoint& p, std::size_t, QuadratureScratch& s) {
+          return impl_->diffuse_pixel(p, s);
+        });
   }
   return *impl_->diffuse;
 }
@@ -201,10 +201,9 @@ const Image& Renderer::diffuse() {
 Image Renderer::specular(const Lobe& lobe) {
   return std::visit(
       [&](const auto& l) {
-        return impl_->render_pass(
-            [&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
-              return impl_->specular_pixel(l, lobe, p, i, s);
-            });
+        return impl_->render_pass([&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
+          return impl_->specular_pixel(l, lobe, p, i, s);
+        });
       },
       lobe);
 }

@@ -42,8 +42,8 @@ std::vector<AccuracyResult> measure_accuracy(Renderer& renderer, Renderer& refer
     // Up by 10%, or down where that would leave the valid range (cz near 1).
     stepped[d] *= stepped[d] * 1.1 <= info.params[d].valid_max ? 1.1 : 1 / 1.1;
     const Image next = reference.specular(make_lobe(setting.model, stepped));
-    results.push_back({std::string(info.params[d].name), error,
-                       image_distance(reference_image, next)});
+    results.push_back(
+        {std::string(info.params[d].name), error, image_distance(reference_image, next)});
   }
   return results;
 }

@@ -20,8 +20,10 @@ struct TempDir {
 TEST(CliRender, RendersImagesWhoseDistanceIsTheMetric) {
   TempDir dir;
   const fs::path a = dir.path / "a.exr", b = dir.path / "b.exr";
-  auto r = run_cli("render --material ward:alpha_x=0.1,alpha_y=0.1,rho_d=0.2,rho_s=0.5 --res 24 "
-                   "--out " + a.string());
+  auto r = run_cli(
+      "render --material ward:alpha_x=0.1,alpha_y=0.1,rho_d=0.2,rho_s=0.5 --res 24 "
+      "--out " +
+      a.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   r = run_cli("render --material ward:alpha_x=0.2,alpha_y=0.2,rho_d=0.2,rho_s=0.5 --res 24 --out " +
               b.string());

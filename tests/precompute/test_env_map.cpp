@@ -5,9 +5,9 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <unistd.h>
 #include <fstream>
 #include <limits>
-#include <unistd.h>
 
 namespace brdfnav {
 namespace {
@@ -19,11 +19,11 @@ fs::path temp_path(const std::string& name) {
 }
 
 // A w x h map with `channels` channels, every value `fill` except texel (1, 1) = `special`.
-fs::path write_map(const std::string& name, int w, int h, int channels, float fill,
-                   float special) {
+fs::path write_map(const std::string& name, int w, int h, int channels, float fill, float special) {
   const fs::path path = temp_path(name);
   std::vector<float> pixels(static_cast<std::size_t>(w) * h * channels, fill);
-  for (int c = 0; c < channels; ++c) pixels[(static_cast<std::size_t>(1) * w + 1) * channels + c] = special;
+  for (int c = 0; c < channels; ++c)
+    pixels[(static_cast<std::size_t>(1) * w + 1) * channels + c] = special;
   auto out = OIIO::ImageOutput::create(path.string());
   EXPECT_TRUE(out);
   EXPECT_TRUE(out->open(path.string(), OIIO::ImageSpec(w, h, channels, OIIO::TypeDesc::FLOAT)));
@@ -50,8 +50,8 @@ TEST(EnvMap, RejectsNonFiniteTexelsNamingFileAndCount) {
   EXPECT_NE(load_error(inf).find("NaN or infinite"), std::string::npos);
 
   std::vector<std::string> warnings;
-  const EnvMap sane = EnvMap::load(nan, {.sanitize = true},
-                                   [&](const std::string& w) { warnings.push_back(w); });
+  const EnvMap sane =
+      EnvMap::load(nan, {.sanitize = true}, [&](const std::string& w) { warnings.push_back(w); });
   EXPECT_EQ(sane.texel(1, 1)[0], 0.0);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find(nan.string()), std::string::npos);

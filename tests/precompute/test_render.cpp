@@ -3,8 +3,8 @@
 #include <brdfnav/precompute/render_accuracy.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <unistd.h>
+#include <fstream>
 
 namespace brdfnav {
 namespace {
@@ -164,8 +164,7 @@ TEST_P(Accuracy, ErrorIsATenthOfATenPercentStep) {
 
 INSTANTIATE_TEST_SUITE_P(EveryModel, Accuracy,
                          ::testing::Values(ModelId::blinn_phong, ModelId::ward,
-                                           ModelId::cook_torrance, ModelId::lafortune,
-                                           ModelId::he),
+                                           ModelId::cook_torrance, ModelId::lafortune, ModelId::he),
                          [](const auto& info) { return std::string(model_info(info.param).name); });
 
 }  // namespace

@@ -1,0 +1,71 @@
+#include <brdfnav/thumbnails.h>
+
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <cmath>
+
+namespace brdfnav {
+
+namespace {
+
+// `image` resampled to `size` x `size` (OIIO's default filter); the mask is made 0/1 again.
+Image resampled(const Image& image, int size) {
+  if (image.width == size && image.height == size) return image;
+  const OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
+  const OIIO::ImageBuf source(spec, const_cast<float*>(image.rgba.data()));
+  const OIIO::ImageBuf scaled =
+      OIIO::ImageBufAlgo::resize(source, "", 0, OIIO::ROI(0, size, 0, size, 0, 1, 0, 4));
+  Image out(size, size);
+  scaled.get_pixels(OIIO::ROI(0, size, 0, size, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT,
+                    out.rgba.data());
+  for (std::size_t i = 3; i < out.rgba.size(); i += 4) out.rgba[i] = out.rgba[i] > 0.5f ? 1.f : 0.f;
+  return out;
+}
+
+}  // namespace
+
+Thumbnails::Thumbnails(const Database& database, int resolution)
+    : database_(database),
+      resolution_(resolution > 0 ? resolution : database.manifest().resolution) {}
+
+std::shared_ptr<const Image> Thumbnails::image(Key key) const {
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+  }
+  // Read outside the lock: other threads' thumbnails need not wait for this file.
+  const auto path = key.first < 0
+                        ? database_.diffuse_path()
+                        : database_.image_path(static_cast<ModelId>(key.first), key.second);
+  Image img;
+  try {
+    img = resampled(read_image(path), resolution_);
+  } catch (const ImageError& e) {
+    throw DatabaseError(e.what());
+  }
+  auto shared = std::make_shared<const Image>(std::move(img));
+  std::lock_guard lock(mutex_);
+  return cache_.emplace(key, std::move(shared)).first->second;
+}
+
+Image Thumbnails::render(const Material& m) const {
+  validate(m);
+  const ModelEmbedding* embedding = database_.embedding(m.model);
+  if (!embedding)
+    throw DatabaseError(database_.dir().string() + ": holds no model '" +
+                        std::string(model_info(m.model).name) + "'");
+  const std::shared_ptr<const Image> diffuse = image({-1, 0});
+  Image out(resolution_, resolution_);
+  std::vector<double> root(out.rgba.size(), 0.0);
+  for (const ParamGrid::Corner& c : embedding->grid().corners(m.params)) {
+    const std::shared_ptr<const Image> spec = image({static_cast<int>(m.model), c.node});
+    const Image corner = compose(*diffuse, *spec, m.rho_d, m.rho_s);
+    for (std::size_t i = 0; i < root.size(); ++i)
+      if (i % 4 != 3) root[i] += c.weight * std::cbrt(static_cast<double>(corner.rgba[i]));
+  }
+  for (std::size_t i = 0; i < root.size(); ++i)
+    out.rgba[i] = i % 4 == 3 ? diffuse->rgba[i] : static_cast<float>(root[i] * root[i] * root[i]);
+  return out;
+}
+
+}  // namespace brdfnav

@@ -1,0 +1,134 @@
+// Thumbnails of any material from a test-profile database: exact at grid nodes, close to the
+// exactly rendered image between them, resampled to any size, thread-safe, and through OCIO.
+#include "navigator_fixture.h"
+
+#include <brdfnav/navigator.h>
+#include <brdfnav/ocio/color_pipeline.h>
+#include <brdfnav/precompute/render.h>
+#include <brdfnav/thumbnails.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <thread>
+
+namespace brdfnav::test {
+namespace {
+
+const Database& database() {
+  static const Database db = Database::open(NavigationDatabase::get().dir());
+  return db;
+}
+
+Material ward(double ax, double ay) {
+  Material m = default_material(ModelId::ward);
+  m.params = {ax, ay};
+  m.rho_d = Rgb(0.3, 0.2, 0.1), m.rho_s = Rgb(0.4, 0.5, 0.6);
+  return m;
+}
+
+TEST(Thumbnails, AtAGridNodeTheyAreThePreRenderedImage) {
+  const Thumbnails thumbnails(database(), 0);
+  const ParamGrid& grid = database().embedding(ModelId::ward)->grid();
+  const std::size_t node = 4;
+  const std::vector<double> p = grid.node_values(node);
+  const Material m = ward(p[0], p[1]);
+  const Image thumb = thumbnails.render(m);
+  const Image expected =
+      compose(read_image(database().diffuse_path()),
+              read_image(database().image_path(ModelId::ward, node)), m.rho_d, m.rho_s);
+  ASSERT_EQ(thumb.width, expected.width);
+  for (std::size_t i = 0; i < thumb.rgba.size(); ++i)
+    ASSERT_NEAR(thumb.rgba[i], expected.rgba[i], 1e-5 * (1 + expected.rgba[i])) << i;
+}
+
+// Between nodes a thumbnail is the image whose cube root the embedding interpolates: its
+// distance to a corner's image is the distance the navigator measures (up to the embedding's
+// truncation to 24 coefficients), and it lies within the grid cell's span of the exact image.
+// The test profile's Ward axis steps by 10x, so nothing closer than the cell's span is asked.
+TEST(Thumbnails, BetweenNodesTheyAreWhatTheEmbeddingMeasures) {
+  const Thumbnails thumbnails(database(), 0);
+  const Navigator navigator(Database::open(NavigationDatabase::get().dir()));
+  const ParamGrid& grid = database().embedding(ModelId::ward)->grid();
+  const double lo = grid.axis(0)[0], hi = grid.axis(0)[1];
+  const double mid = std::sqrt(lo * hi);  // the axis is logarithmic
+  const Image thumb = thumbnails.render(ward(mid, hi));
+  const Image corner = thumbnails.render(ward(hi, hi));
+  const double measured = navigator.distance(ward(mid, hi), ward(hi, hi));
+  EXPECT_NEAR(image_distance(thumb, corner), measured, 0.05 * measured);
+
+  const EnvMap env = EnvMap::load(kDefaultEnvPath, {}, [](const std::string&) {});
+  const Scene sphere = Scene::sphere();
+  Renderer renderer(env, sphere, database().manifest().resolution);
+  const Image exact = renderer.render(ward(mid, hi));
+  EXPECT_LT(image_distance(thumb, exact), image_distance(renderer.render(ward(lo, hi)), corner));
+}
+
+TEST(Thumbnails, AreResampledToTheAskedSizeWithABinaryMask) {
+  const Thumbnails thumbnails(database(), 128);
+  const Image t = thumbnails.render(ward(0.05, 0.02));
+  ASSERT_EQ(t.width, 128);
+  ASSERT_EQ(t.height, 128);
+  int covered = 0;
+  for (int y = 0; y < 128; ++y)
+    for (int x = 0; x < 128; ++x) {
+      const float a = t.pixel(x, y)[3];
+      ASSERT_TRUE(a == 0.f || a == 1.f);
+      covered += a == 1.f;
+      if (a == 1.f) ASSERT_GE(t.pixel(x, y)[1], 0.f);
+    }
+  // The unit disk covers pi/4 of the image.
+  EXPECT_NEAR(covered / (128.0 * 128.0), kPi / 4, 0.03);
+}
+
+TEST(Thumbnails, RejectsInvalidMaterials) {
+  const Thumbnails thumbnails(database(), 32);
+  Material bad = ward(0.05, 0.05);
+  bad.rho_d[0] = std::nan("");
+  EXPECT_THROW(thumbnails.render(bad), MaterialError);
+}
+
+TEST(Thumbnails, ConcurrentRendersMatchSerialOnes) {
+  const Thumbnails serial(database(), 64), shared(database(), 64);
+  std::vector<Material> materials;
+  for (int i = 0; i < 16; ++i) materials.push_back(ward(0.006 + 0.03 * i, 0.2 - 0.01 * i));
+  std::vector<Image> expected;
+  for (const Material& m : materials) expected.push_back(serial.render(m));
+  std::vector<std::vector<Image>> got(8);
+  std::vector<std::jthread> pool;
+  for (int t = 0; t < 8; ++t)
+    pool.emplace_back([&, t] {
+      for (const Material& m : materials) got[t].push_back(shared.render(m));
+    });
+  pool.clear();
+  for (const auto& run : got)
+    for (std::size_t i = 0; i < materials.size(); ++i) EXPECT_EQ(run[i].rgba, expected[i].rgba);
+}
+
+double srgb_encode(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
+}
+
+// Through OCIO's Standard sRGB view a thumbnail is the sRGB encoding of its linear pixels over the
+// pipeline's grey background, to one code value (the built-in config's matrices are an identity
+// only to ~1e-6, which rounding can move across a code boundary; docs/COLOR.md).
+TEST(Thumbnails, ThroughOcioMatchTheSrgbEncoding) {
+  const Thumbnails thumbnails(database(), 48);
+  const Image t = thumbnails.render(ward(0.02, 0.02));
+  ocio::PipelineOptions options;
+  options.config_path = "";
+  const ocio::ColorPipeline pipeline(options);
+  const std::vector<std::uint8_t> bytes =
+      pipeline.apply(t.rgba.data(), t.width, t.height, "sRGB", "Standard");
+  ASSERT_EQ(bytes.size(), t.rgba.size());
+  for (std::size_t p = 0; p < t.rgba.size(); p += 4) {
+    const double a = t.rgba[p + 3];
+    for (int c = 0; c < 3; ++c) {
+      const double linear = t.rgba[p + c] + (1 - a) * options.background[c];
+      ASSERT_NEAR(bytes[p + c], 255 * srgb_encode(linear), 1.0) << p << " " << c;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace brdfnav::test
