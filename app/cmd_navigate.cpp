@@ -1,12 +1,17 @@
 // `brdfnav neighbors`: a material's variations at equal visual distance, as YAML;
+// `brdfnav variations`: the same as a labelled contact sheet through OCIO;
 // `brdfnav export`: a chosen material with its provenance and its equivalents in the other
-// models. Both read a database made by `brdfnav precompute` (docs/NAVIGATION.md).
+// models. All read a database made by `brdfnav precompute` (docs/NAVIGATION.md).
 #include "commands.h"
 
 #include <brdfnav/io/material_yaml.h>
 #include <brdfnav/io/navigation_yaml.h>
 #include <brdfnav/navigator.h>
+#include <brdfnav/ocio/color_pipeline.h>
+#include <brdfnav/ocio/contact_sheet.h>
+#include <brdfnav/thumbnails.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -104,6 +109,104 @@ void add_neighbors_command(CLI::App& app) {
   });
 }
 
+// The label of the opposite direction: "x+" <-> "x-", "ab+<a>" <-> "ab+<a + 180>"; "" for labels
+// without one (the models and gallery tabs).
+std::string opposite(const std::string& label) {
+  if (label.rfind("ab+", 0) == 0)
+    return "ab+" + std::to_string((std::stoi(label.substr(3)) + 180) % 360);
+  if (label.empty() || (label.back() != '+' && label.back() != '-')) return "";
+  return label.substr(0, label.size() - 1) + (label.back() == '+' ? '-' : '+');
+}
+
+// Orders a tab's neighbours for the sheet's ring: one of each opposite pair, then the others in
+// the same order, then those without a pair, so that each pair sits on one line through the
+// current material (contact_sheet.h).
+std::vector<Neighbor> ring_order(const std::vector<Neighbor>& neighbors) {
+  std::vector<Neighbor> first, second, single;
+  std::vector<bool> placed(neighbors.size(), false);
+  for (std::size_t i = 0; i < neighbors.size(); ++i) {
+    if (placed[i]) continue;
+    placed[i] = true;
+    const std::string other = opposite(neighbors[i].label);
+    auto j = std::find_if(neighbors.begin(), neighbors.end(),
+                          [&](const Neighbor& n) { return !other.empty() && n.label == other; });
+    if (j == neighbors.end() || placed[j - neighbors.begin()]) {
+      single.push_back(neighbors[i]);
+      continue;
+    }
+    placed[j - neighbors.begin()] = true;
+    first.push_back(neighbors[i]);
+    second.push_back(*j);
+  }
+  first.insert(first.end(), second.begin(), second.end());
+  first.insert(first.end(), single.begin(), single.end());
+  return first;
+}
+
+ocio::SheetTile tile(const Thumbnails& thumbnails, const ocio::ColorPipeline& pipeline,
+                     const std::string& display, const std::string& view, const Material& m,
+                     std::vector<std::string> label) {
+  const Image img = thumbnails.render(m);
+  return {{img.width, img.height,
+           pipeline.apply(img.rgba.data(), img.width, img.height, display, view)},
+          std::move(label)};
+}
+
+void add_variations_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "variations", "Write a labelled contact sheet of a material's neighbours in one tab (PNG)");
+  auto in = std::make_shared<Inputs>();
+  auto radius = std::make_shared<double>(0);
+  auto tab = std::make_shared<std::string>("lobe");
+  auto display = std::make_shared<std::string>(), view = std::make_shared<std::string>();
+  auto size = std::make_shared<int>(128);
+  auto out = std::make_shared<std::string>();
+  add_inputs(*cmd, *in);
+  cmd->add_option("--radius,-r", *radius, "Distance eps (cube-root RMS metric units)")
+      ->required()
+      ->check(kPositiveFinite);
+  std::vector<std::string> tabs = tab_choices();
+  tabs.pop_back();  // one tab per sheet
+  cmd->add_option("--tab", *tab, "lobe, diffuse, specular, models or gallery")
+      ->capture_default_str()
+      ->check(CLI::IsMember(tabs));
+  cmd->add_option("--display", *display, "OCIO display (default: the config's)");
+  cmd->add_option("--view", *view, "OCIO view (default: the display's)");
+  cmd->add_option("--size", *size, "Thumbnail width and height")
+      ->capture_default_str()
+      ->check(CLI::Range(16, 1024));
+  cmd->add_option("--out,-o", *out, "PNG file to write (atomically)")->required();
+  cmd->callback([=] {
+    const Navigator navigator = open_navigator(*in);
+    const Material current = load_current(*in);
+    const ocio::ColorPipeline pipeline;
+    const std::string d = display->empty() ? pipeline.default_display() : *display;
+    const std::string v = view->empty() ? pipeline.default_view(d) : *view;
+    for_option("--display/--view", [&] { pipeline.validate(d, v); });
+    const Thumbnails thumbnails(navigator.database(), *size);
+    const Tab t = *find_tab(*tab);
+    std::vector<ocio::SheetTile> tiles;
+    for (const Neighbor& n : ring_order(navigator.neighbors(current, *radius, t))) {
+      char distance[32];
+      std::snprintf(distance, sizeof distance, "d=%.4f", n.distance);
+      std::vector<std::string> label{n.label, distance};
+      if (n.at_boundary) label.emplace_back("at_boundary");
+      if (n.clamped) label.emplace_back("clamped");
+      tiles.push_back(tile(thumbnails, pipeline, d, v, n.material, std::move(label)));
+    }
+    ocio::SheetOptions options;
+    options.tile_size = *size;
+    char title[160];
+    std::snprintf(title, sizeof title, "%s, %s tab, eps %.4g, %s / %s",
+                  std::string(model_info(current.model).name).c_str(), tab->c_str(), *radius,
+                  d.c_str(), v.c_str());
+    options.title = title;
+    const ocio::SheetTile centre = tile(thumbnails, pipeline, d, v, current,
+                                        {"current", std::string(model_info(current.model).name)});
+    ocio::write_contact_sheet(*out, centre, tiles, options);
+  });
+}
+
 void add_export_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "export", "Write a material with its provenance and its best fit in every other model");
@@ -121,6 +224,7 @@ void add_export_command(CLI::App& app) {
 
 void add_navigate_commands(CLI::App& app) {
   add_neighbors_command(app);
+  add_variations_command(app);
   add_export_command(app);
 }
 

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   brdfnav::cli::add_render_commands(app);
   brdfnav::cli::add_precompute_commands(app);
   brdfnav::cli::add_navigate_commands(app);
+  brdfnav::cli::add_bench_commands(app);
   brdfnav::cli::add_validate_command(app);
   try {
     app.parse(argc, argv);

@@ -1,4 +1,4 @@
-// `brdfnav neighbors` and `brdfnav export` end to end, on a test-profile database the suite
+// `brdfnav neighbors`, `brdfnav variations` and `brdfnav export` end to end, on a test-profile database the suite
 // builds once with `brdfnav precompute` (the suite is registered WHOLE).
 #include "app/cli_runner.h"
 
@@ -133,6 +133,31 @@ TEST_F(CliNavigate, RejectsBadInputNamingIt) {
   EXPECT_FALSE(fs::exists(out));
   for (const auto& e : fs::directory_iterator(root_))
     EXPECT_EQ(e.path().filename().string().find("never"), std::string::npos) << e.path();
+}
+
+// A contact sheet per tab through OCIO: a PNG of the documented layout (contact_sheet.h); a bad
+// view or tab is rejected by name and leaves no file.
+TEST_F(CliNavigate, VariationsWritesAContactSheetPerTab) {
+  const std::string material = "--material ward:alpha_x=0.05,alpha_y=0.03,rho_d=0.1,rho_s=0.5";
+  for (const char* tab : {"lobe", "diffuse", "specular", "models", "gallery"}) {
+    const fs::path sheet = file(std::string("sheet_") + tab + ".png");
+    const CliResult r = run_cli("variations --db " + db().string() + " " + material +
+                                " --radius 0.05 --size 32 --tab " + tab + " --out " +
+                                sheet.string());
+    ASSERT_EQ(r.exit_code, 0) << tab << ": " << r.err;
+    const std::string png = read_text(sheet);
+    ASSERT_GT(png.size(), 8u) << tab;
+    EXPECT_EQ(png.substr(1, 3), "PNG") << tab;
+  }
+  const fs::path out = file("never_sheet.png");
+  CliResult r = run_cli("variations --db " + db().string() + " " + material +
+                        " --radius 0.05 --view Nope --out " + out.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("Nope"), std::string::npos) << r.err;
+  r = run_cli("variations --db " + db().string() + " " + material +
+              " --radius 0.05 --tab all --out " + out.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace

@@ -1,0 +1,103 @@
+// `brdfnav bench render`: the pre-renderer's speed and accuracy (issue #3) on this machine, as
+// the Markdown table bench/RESULTS.md records; `brdfnav bench navigator`: the neighbour service.
+#include "bench_navigator.h"
+#include "commands.h"
+
+#include <brdfnav/precompute/render_accuracy.h>
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+
+namespace brdfnav::cli {
+
+namespace {
+
+struct BenchOptions {
+  SceneOptions scene;
+  std::string model;  // empty: all
+  int repeats = 3;
+  bool accuracy = true;
+};
+
+// Mean wall-clock milliseconds of one specular image of the setting.
+double time_image(Renderer& renderer, const AccuracySetting& s, int repeats) {
+  const Lobe lobe = make_lobe(s.model, s.params);
+  const auto start = std::chrono::steady_clock::now();
+  for (int r = 0; r < repeats; ++r) renderer.specular(lobe);
+  const std::chrono::duration<double, std::milli> elapsed =
+      std::chrono::steady_clock::now() - start;
+  return elapsed.count() / repeats;
+}
+
+void run_render_bench(const BenchOptions& o) {
+  const EnvMap env = load_env(o.scene);
+  const Scene scene = load_scene(o.scene);
+  Renderer renderer(env, scene, o.scene.resolution);
+  RenderOptions reference_options;
+  reference_options.quality = reference_quality(renderer.options().quality);
+  Renderer reference(env, scene, o.scene.resolution, reference_options);
+  std::printf("resolution %d, %s, %s\n\n", o.scene.resolution, env.source().c_str(),
+              scene.description().c_str());
+  std::printf("| model | setting | ms per image | accuracy ratio per parameter |\n");
+  std::printf("|---|---|---|---|\n");
+  std::map<ModelId, double> total_ms;
+  for (const AccuracySetting& s : accuracy_settings()) {
+    const std::string name(model_info(s.model).name);
+    if (!o.model.empty() && o.model != name) continue;
+    const double ms = time_image(renderer, s, o.repeats);
+    total_ms[s.model] += ms / 3;
+    std::string ratios;
+    if (o.accuracy)
+      for (const AccuracyResult& r : measure_accuracy(renderer, reference, s)) {
+        char cell[96];
+        std::snprintf(cell, sizeof cell, "%s%s %.3f", ratios.empty() ? "" : ", ", r.param.c_str(),
+                      r.ratio());
+        ratios += cell;
+      }
+    std::printf("| %s | %s | %.1f | %s |\n", name.c_str(), s.name.c_str(), ms, ratios.c_str());
+    std::fflush(stdout);
+  }
+  std::printf("\n| model | mean ms per image |\n|---|---|\n");
+  for (const auto& [model, ms] : total_ms)
+    std::printf("| %s | %.1f |\n", std::string(model_info(model).name).c_str(), ms);
+}
+
+}  // namespace
+
+void add_bench_commands(CLI::App& app) {
+  auto* bench = app.add_subcommand("bench", "Measure brdfnav on this machine");
+  bench->require_subcommand(1);
+  auto* render = bench->add_subcommand(
+      "render", "ms per image and accuracy ratio (vs 16x the samples) per model and setting");
+  auto o = std::make_shared<BenchOptions>();
+  o->scene.resolution = 128;
+  add_scene_options(*render, o->scene);
+  render->add_option("--model", o->model, "Only this model");
+  render->add_option("--repeats", o->repeats, "Timed renders per setting")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  render->add_flag("!--no-accuracy", o->accuracy, "Skip the accuracy ratios (timing only)");
+  render->callback([o] {
+    if (!o->model.empty() && !find_model(o->model))
+      throw std::runtime_error("--model: unknown model '" + o->model + "'");
+    run_render_bench(*o);
+  });
+
+  auto* nav = bench->add_subcommand(
+      "navigator", "Latency per tab, thumbnails through OCIO and memory with a database open");
+  auto n = std::make_shared<NavigatorBenchOptions>();
+  nav->add_option("--db", n->db, "Database directory")->required();
+  nav->add_option("--radius", n->radius, "Radius eps")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  nav->add_option("--materials", n->materials, "Random materials per model")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  nav->add_option("--thumbnail-size", n->thumbnail_size, "Thumbnail width and height")
+      ->capture_default_str()
+      ->check(CLI::Range(8, 1024));
+  nav->callback([n] { run_navigator_bench(*n); });
+}
+
+}  // namespace brdfnav::cli
