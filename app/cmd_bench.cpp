@@ -1,8 +1,11 @@
 // `brdfnav bench render`: the pre-renderer's speed and accuracy (issue #3) on this machine, as
-// the Markdown table bench/RESULTS.md records; `brdfnav bench navigator`: the neighbour service.
+// the Markdown table bench/RESULTS.md records; `brdfnav bench navigator`: the neighbour service;
+// `brdfnav bench fits`: the conversion fits.
 #include "bench_navigator.h"
 #include "commands.h"
 
+#include <brdfnav/core/grid.h>
+#include <brdfnav/precompute/fit.h>
 #include <brdfnav/precompute/render_accuracy.h>
 
 #include <chrono>
@@ -63,6 +66,37 @@ void run_render_bench(const BenchOptions& o) {
     std::printf("| %s | %.1f |\n", std::string(model_info(model).name).c_str(), ms);
 }
 
+// Fits of grid nodes of every model by every other model (default FitOptions, one thread): mean
+// milliseconds per fit into each target model, and overall.
+void run_fit_bench(int per_model) {
+  std::printf(
+      "| target model | fits | mean ms per fit | mean relative error |\n|---|---|---|---|\n");
+  double total_ms = 0;
+  int total = 0;
+  for (const ModelInfo& to : models()) {
+    double ms = 0, error = 0;
+    int count = 0;
+    for (const ModelInfo& from : models()) {
+      if (from.id == to.id) continue;
+      const ParamGrid grid(from.params);
+      for (int i = 0; i < per_model; ++i) {
+        const std::size_t node = (i * 7919u + 13u) % grid.node_count();
+        const Lobe target = make_lobe(from.id, grid.node_values(node));
+        const auto start = std::chrono::steady_clock::now();
+        const LobeFit fit = fit_lobe(target, to.id);
+        ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                  .count();
+        error += fit.relative_error;
+        ++count;
+      }
+    }
+    std::printf("| %s | %d | %.1f | %.3f |\n", std::string(to.name).c_str(), count, ms / count,
+                error / count);
+    total_ms += ms, total += count;
+  }
+  std::printf("\nall fits: %d, mean %.1f ms per fit (one thread)\n", total, total_ms / total);
+}
+
 }  // namespace
 
 void add_bench_commands(CLI::App& app) {
@@ -98,6 +132,13 @@ void add_bench_commands(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(8, 1024));
   nav->callback([n] { run_navigator_bench(*n); });
+
+  auto* fits = bench->add_subcommand("fits", "Time the model-to-model conversion fits (paper, 4)");
+  auto per_model = std::make_shared<int>(8);
+  fits->add_option("--per-model", *per_model, "Source grid nodes per model and target")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  fits->callback([per_model] { run_fit_bench(*per_model); });
 }
 
 }  // namespace brdfnav::cli

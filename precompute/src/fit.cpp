@@ -94,11 +94,18 @@ struct LmFunctor : Eigen::DenseFunctor<double> {
   }
 };
 
-// Every grid node of `model`, in scale coordinates.
+// Every other grid node of `model` along each axis (the last one kept), in scale coordinates: a
+// quarter (two parameters) to an eighth (three) of the grid, fine enough to rank the starts of
+// Levenberg-Marquardt, which then moves by less than a grid cell.
 std::vector<Eigen::VectorXd> grid_starts(ModelId model) {
   const ParamGrid grid(model_info(model).params);
   std::vector<Eigen::VectorXd> starts;
   for (std::size_t node = 0; node < grid.node_count(); ++node) {
+    const std::vector<std::size_t> multi = grid.multi_index(node);
+    bool coarse = true;
+    for (std::size_t d = 0; d < multi.size(); ++d)
+      coarse = coarse && (multi[d] % 2 == 0 || multi[d] + 1 == grid.axis(d).size());
+    if (!coarse) continue;
     const std::vector<double> values = grid.node_values(node);
     Eigen::VectorXd x(values.size());
     for (std::size_t i = 0; i < values.size(); ++i) x[i] = to_scale(grid.specs()[i], values[i]);
@@ -143,35 +150,50 @@ LobeFit fit_lobe(const Lobe& target, ModelId model, const FitOptions& options) {
     norm += q.weight[k] * fa[k].square().sum();
   }
   const FitProblem problem(q, fa, model);
+  // Ranking the starts needs only a rough error: every kRankStride-th point of the quadrature.
+  constexpr std::size_t kRankStride = 4;
+  FitQuadrature coarse_q;
+  std::vector<Rgb> coarse_fa;
+  for (std::size_t k = 0; k < fa.size(); k += kRankStride) {
+    coarse_q.wi.push_back(q.wi[k]), coarse_q.wo.push_back(q.wo[k]);
+    coarse_q.weight.push_back(q.weight[k] * kRankStride);
+    coarse_fa.push_back(fa[k]);
+  }
+  const FitProblem ranking(coarse_q, coarse_fa, model);
 
-  // Rank every grid node, then refine the best few with Levenberg-Marquardt.
+  // Rank a coarse grid, then refine the best few with Levenberg-Marquardt.
   std::vector<Eigen::VectorXd> starts = grid_starts(model);
   std::vector<double> cost(starts.size());
   for (std::size_t i = 0; i < starts.size(); ++i)
-    cost[i] = problem.evaluate(starts[i], nullptr).second;
+    cost[i] = ranking.evaluate(starts[i], nullptr).second;
   std::vector<std::size_t> order(starts.size());
   std::iota(order.begin(), order.end(), 0);
   const std::size_t keep = std::min<std::size_t>(options.starts, order.size());
   std::partial_sort(order.begin(), order.begin() + keep, order.end(),
                     [&](std::size_t a, std::size_t b) { return cost[a] < cost[b]; });
 
-  Eigen::VectorXd best = starts[order[0]];
-  double best_cost = cost[order[0]];
-  const int n = static_cast<int>(best.size());
-  for (std::size_t s = 0; s < keep; ++s) {
-    Eigen::VectorXd x = starts[order[s]];
-    LmFunctor functor(problem, n);
+  // Each start is refined on the coarse quadrature; the best result is polished on the full one.
+  const int n = static_cast<int>(starts[order[0]].size());
+  auto refine = [&](const FitProblem& p, Eigen::VectorXd x) {
+    LmFunctor functor(p, n);
     Eigen::NumericalDiff<LmFunctor> numeric(functor);
     Eigen::LevenbergMarquardt<Eigen::NumericalDiff<LmFunctor>> lm(numeric);
     lm.setMaxfev(options.max_iterations * (n + 1));
     lm.minimize(x);
-    x = x.cwiseMax(problem.box().lo).cwiseMin(problem.box().hi);
+    return Eigen::VectorXd(x.cwiseMax(p.box().lo).cwiseMin(p.box().hi));
+  };
+  Eigen::VectorXd best = starts[order[0]];
+  double best_cost = problem.evaluate(best, nullptr).second;
+  for (std::size_t s = 0; s < keep; ++s) {
+    const Eigen::VectorXd x = refine(ranking, starts[order[s]]);
     const double c = problem.evaluate(x, nullptr).second;
     if (c < best_cost) best_cost = c, best = x;
   }
+  const Eigen::VectorXd polished = refine(problem, best);
+  if (problem.evaluate(polished, nullptr).second < best_cost) best = polished;
   const auto [scale, err] = problem.evaluate(best, nullptr);
   return {model, problem.box().values(best), scale, norm > 0 ? std::sqrt(err / norm) : 0.0,
-          problem.evaluations()};
+          problem.evaluations() + ranking.evaluations()};
 }
 
 }  // namespace brdfnav
