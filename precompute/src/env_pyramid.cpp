@@ -12,10 +12,14 @@ namespace {
 constexpr double kHotFactor = 100;
 constexpr std::size_t kMaxHot = 512;
 
-}  // namespace
+// The lat-long rectangle of texel coordinates [x0, x1] x [y0, y1] of a map `width` x `height`.
+struct LatLongRect {
+  double solid_angle;
+  Vec3 centroid;  // unit
+};
 
 LatLongRect lat_long_rect(double x0, double x1, double y0, double y1, int width, int height) {
-  // The differences below are written in forms without cancellation: pieces of texels are tiny.
+  // The differences are written in forms without cancellation: the rows by the poles are thin.
   const double phi_m = kPi * ((x0 + x1) / width - 1), half_dphi = kPi * (x1 - x0) / width;
   const double theta_m = kPi * (y0 + y1) / (2 * height), dtheta = kPi * (y1 - y0) / height;
   const double sin_tm = std::sin(theta_m), sin_hd = std::sin(dtheta / 2);
@@ -28,6 +32,8 @@ LatLongRect lat_long_rect(double x0, double x1, double y0, double y1, int width,
   return {2 * half_dphi * 2 * sin_tm * sin_hd, moment.normalized()};
 }
 
+}  // namespace
+
 EnvPyramid::EnvPyramid(const EnvMap& env) {
   build_texels(env);
   while (levels_.back().width > 2 || levels_.back().height > 1)
@@ -37,17 +43,18 @@ EnvPyramid::EnvPyramid(const EnvMap& env) {
 
 void EnvPyramid::build_texels(const EnvMap& env) {
   const int w = env.width(), h = env.height();
+  std::vector<double> row_solid_angle;  // of one texel of each row
   double total = 0;
   for (int y = 0; y < h; ++y) {
-    texel_solid_angle_.push_back(lat_long_rect(0, 1, y, y + 1, w, h).solid_angle);
-    for (int x = 0; x < w; ++x) total += luminance(env.texel(x, y)) * texel_solid_angle_[y];
+    row_solid_angle.push_back(lat_long_rect(0, 1, y, y + 1, w, h).solid_angle);
+    for (int x = 0; x < w; ++x) total += luminance(env.texel(x, y)) * row_solid_angle[y];
   }
   const double threshold = kHotFactor * total / (4 * kPi);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       if (threshold > 0 && luminance(env.texel(x, y)) > threshold)
         hot_.push_back({x, y, env.texel(x, y), lat_long_rect(x, x + 1, y, y + 1, w, h).centroid,
-                        texel_solid_angle_[y]});
+                        row_solid_angle[y]});
   // The brightest first, ties in map order: deterministic.
   std::stable_sort(hot_.begin(), hot_.end(), [](const HotTexel& a, const HotTexel& b) {
     return luminance(a.radiance) > luminance(b.radiance);

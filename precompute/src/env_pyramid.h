@@ -34,9 +34,6 @@ class EnvPyramid {
     const float* d = &l.data[kStride * (static_cast<std::size_t>(y) * l.width + x)];
     return {Vec3(d[0], d[1], d[2]), Rgb(d[3], d[4], d[5])};
   }
-  // Solid angle of a level-0 texel of row y.
-  double texel_solid_angle(int y) const { return texel_solid_angle_[y]; }
-
   struct HotTexel {
     int x, y;      // level-0 coordinates
     Rgb radiance;  // of the original map
@@ -58,15 +55,6 @@ class EnvPyramid {
 
   std::vector<HotTexel> hot_;
   std::vector<Level> levels_;
-  std::vector<double> texel_solid_angle_;
 };
-
-// Geometry of the lat-long rectangle of texel coordinates [x0, x1] x [y0, y1] of a map
-// `width` x `height`: its solid angle and its centroid direction (unit).
-struct LatLongRect {
-  double solid_angle;
-  Vec3 centroid;
-};
-LatLongRect lat_long_rect(double x0, double x1, double y0, double y1, int width, int height);
 
 }  // namespace brdfnav
