@@ -37,13 +37,16 @@ struct QuadratureScratch {
 template <typename Kernel, typename Visible = AlwaysVisible>
 class Quadrature {
  public:
+  // `horizon` is the normal of the half space the kernel lives in (K = 0 below it), or zero for
+  // a kernel without one (He's mirror filter, which is no BRDF).
   Quadrature(const EnvPyramid& env, const Kernel& kernel, const KernelShape& shape,
-             const RenderQuality& quality, Visible visible = {})
+             const Vec3& horizon, const RenderQuality& quality, Visible visible = {})
       : env_(env),
         kernel_(kernel),
         peak_(shape.peak),
         major_(shape.major),
         minor_(shape.peak.cross(shape.major)),
+        horizon_(horizon),
         visible_(visible) {
     const double wide = shape.channel_scale.maxCoeff();
     major_width_ = shape.major_width * wide;
@@ -157,11 +160,15 @@ class Quadrature {
   }
 
   // Spans of the spherical cap of the window's major radius (any window, but loose for narrow
-  // ellipses); whole rows where the cap reaches a pole.
+  // ellipses), or of the hemisphere above the horizon when that is smaller; whole rows where the
+  // cap reaches a pole.
   void cap_spans(double margin, int& y0, std::vector<std::pair<int, int>>& spans) const {
-    const double radius = std::min(kPi, reach_ * major_width_ + margin);
-    const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
-    const double u_p = EnvMap::texcoord(peak_).x();
+    double radius = std::min(kPi, reach_ * major_width_ + margin);
+    Vec3 centre = peak_;
+    if (horizon_.squaredNorm() > 0 && radius > kPi / 2 + 2 * margin)
+      radius = kPi / 2 + 2 * margin, centre = horizon_;
+    const double theta_p = std::acos(std::clamp(centre.y(), -1.0, 1.0));
+    const double u_p = EnvMap::texcoord(centre).x();
     y0 = std::max(0, static_cast<int>(std::floor((theta_p - radius) / node_angle_)));
     const int y1 =
         std::min(grid_h_ - 1, static_cast<int>(std::floor((theta_p + radius) / node_angle_)));
@@ -268,7 +275,7 @@ class Quadrature {
 
   const EnvPyramid& env_;
   const Kernel& kernel_;
-  Vec3 peak_, major_, minor_;
+  Vec3 peak_, major_, minor_, horizon_;
   double major_width_, minor_width_, reach_, node_angle_;
   int level_, split_, hot_split_, grid_w_, grid_h_;
   Visible visible_;

@@ -134,17 +134,19 @@ struct Renderer::Impl {
     return image;
   }
 
+  // `horizon`: see Quadrature.
   template <typename Kernel>
-  Rgb integrate(const Kernel& kernel, const KernelShape& shape, const SurfacePoint& p,
-                QuadratureScratch& s) const {
-    if (scene.convex()) return Quadrature(pyramid, kernel, shape, options.quality).integrate(s);
+  Rgb integrate(const Kernel& kernel, const KernelShape& shape, const Vec3& horizon,
+                const SurfacePoint& p, QuadratureScratch& s) const {
+    if (scene.convex())
+      return Quadrature(pyramid, kernel, shape, horizon, options.quality).integrate(s);
     auto visible = [&](const Vec3& w) { return !scene.occluded(p, w); };
-    return Quadrature(pyramid, kernel, shape, options.quality, visible).integrate(s);
+    return Quadrature(pyramid, kernel, shape, horizon, options.quality, visible).integrate(s);
   }
 
   Rgb diffuse_pixel(const SurfacePoint& p, QuadratureScratch& s) const {
-    return integrate(LambertKernel{p.normal}, KernelShape::isotropic(p.normal, kLambertWidth), p,
-                     s);
+    return integrate(LambertKernel{p.normal}, KernelShape::isotropic(p.normal, kLambertWidth),
+                     p.normal, p, s);
   }
 
   template <typename L>
@@ -154,14 +156,14 @@ struct Renderer::Impl {
     const Vec3 wo = frame.to_local(kViewDirection);
     if (wo.z() <= 0) return Rgb::Zero();
     const KernelShape shape = lobe_shape(any, wo).to_world(frame);
-    Rgb sum = integrate(LobeKernel<L>{lobe, frame, wo}, shape, p, s);
+    Rgb sum = integrate(LobeKernel<L>{lobe, frame, wo}, shape, p.normal, p, s);
     if constexpr (requires { lobe.mirror_weight(wo); }) {
       const Rgb weight = lobe.mirror_weight(wo);
       if ((weight > 0).any()) {
         const Vec3 mirror = reflect(kViewDirection, p.normal);
         const double width = mirror_width[i];
         sum += integrate(MirrorKernel(mirror, weight, width), KernelShape::isotropic(mirror, width),
-                         p, s);
+                         Vec3::Zero(), p, s);
       }
     }
     return sum;
