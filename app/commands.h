@@ -21,6 +21,7 @@ void add_precompute_commands(CLI::App& app);  // precompute, db-info
 void add_navigate_commands(CLI::App& app);    // neighbors, variations, export
 void add_bench_commands(CLI::App& app);       // bench render, bench navigator
 void add_validate_command(CLI::App& app);     // validate
+void add_serve_command(CLI::App& app);        // serve
 
 // The options every command that renders shares: --env, --sanitize-env, --res, --scene.
 struct SceneOptions {

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   brdfnav::cli::add_navigate_commands(app);
   brdfnav::cli::add_bench_commands(app);
   brdfnav::cli::add_validate_command(app);
+  brdfnav::cli::add_serve_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,173 @@
+// `brdfnav serve`: the navigation interface of the paper (sections 3.3 and 4) as a page in the
+// browser, over the JSON API of serve_api.h (docs/SERVE.md). The page is embedded in the binary;
+// nothing is fetched from anywhere else.
+#include "commands.h"
+#include "serve_api.h"
+#include "web_assets.h"
+
+#include <httplib.h>
+#include <pthread.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+
+namespace brdfnav::cli {
+
+namespace {
+
+struct ServeOptions {
+  std::string db;
+  std::string host = "127.0.0.1";
+  int port = 8080;
+  int resolution = 128;
+};
+
+void reply(httplib::Response& res, const ApiResponse& answer) {
+  res.status = answer.status;
+  res.set_content(answer.body, answer.content_type.c_str());
+}
+
+const WebAsset* find_asset(const std::string& path) {
+  const std::string wanted = path == "/" ? "/index.html" : path;
+  for (const WebAsset& asset : web_assets())
+    if (asset.path == wanted) return &asset;
+  return nullptr;
+}
+
+void add_routes(httplib::Server& server, const NavigatorApi& api) {
+  server.Get("/api/info",
+             [&api](const httplib::Request&, httplib::Response& res) { reply(res, api.info()); });
+  using Method = ApiResponse (NavigatorApi::*)(std::string_view) const;
+  const auto post = [&](const char* path, Method method) {
+    server.Post(path, [&api, method](const httplib::Request& req, httplib::Response& res) {
+      reply(res, (api.*method)(req.body));
+    });
+  };
+  post("/api/neighbors", &NavigatorApi::neighbors);
+  post("/api/thumbnail", &NavigatorApi::thumbnail);
+  post("/api/export", &NavigatorApi::export_yaml);
+  server.Post("/api/import", [&api](const httplib::Request& req, httplib::Response& res) {
+    reply(res, api.import_yaml(req.body, req.get_param_value("name")));
+  });
+  server.Get("/.*", [](const httplib::Request& req, httplib::Response& res) {
+    if (const WebAsset* asset = find_asset(req.path)) {
+      res.set_content(std::string(asset->body), std::string(asset->content_type).c_str());
+    } else {
+      res.status = 404;
+    }
+  });
+}
+
+// Every failure answers in the API's form: {"error": ...} with 400 for the client's mistakes.
+void add_error_handling(httplib::Server& server) {
+  server.set_payload_max_length(kMaxBodyBytes);
+  using Handled = httplib::Server::HandlerResponse;
+  server.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request& req,
+                                                                   httplib::Response& res) {
+    if (!res.body.empty()) return Handled::Unhandled;  // an API answer
+    // httplib refuses a body over the limit with 413 before any handler runs; the API reports
+    // every bad request as 400 naming the field.
+    const bool too_large = res.status == 413;
+    reply(res, too_large ? error_response(
+                               400, "body: larger than " + std::to_string(kMaxBodyBytes) + " bytes")
+                         : error_response(res.status, req.method + " " + req.path + ": not found"));
+    return Handled::Handled;
+  }));
+  server.set_exception_handler(
+      [](const httplib::Request&, httplib::Response& res, std::exception_ptr error) {
+        try {
+          std::rethrow_exception(error);
+        } catch (const std::exception& e) {
+          reply(res, error_response(500, e.what()));
+        } catch (...) {
+          reply(res, error_response(500, "unknown error"));
+        }
+      });
+  server.set_logger([](const httplib::Request& req, const httplib::Response& res) {
+    if (res.status >= 400)
+      std::fprintf(stderr, "brdfnav: serve: %s %s -> %d %s\n", req.method.c_str(), req.path.c_str(),
+                   res.status, res.body.c_str());
+  });
+  // The page loads nothing but its own files and the thumbnails it fetches.
+  server.set_default_headers(
+      {{"Content-Security-Policy", "default-src 'self'; img-src 'self' blob:; object-src 'none'"},
+       {"X-Content-Type-Options", "nosniff"},
+       {"Cache-Control", "no-store"}});
+}
+
+int bind(httplib::Server& server, const ServeOptions& o) {
+  const int port = o.port == 0 ? server.bind_to_any_port(o.host)
+                               : (server.bind_to_port(o.host, o.port) ? o.port : -1);
+  if (port <= 0)
+    throw std::runtime_error("--port: cannot listen on " + o.host + ":" + std::to_string(o.port) +
+                             " (in use, or not an address of this machine)");
+  return port;
+}
+
+std::string url(const std::string& host, int port) {
+  const bool ipv6 = host.find(':') != std::string::npos;
+  return "http://" + (ipv6 ? "[" + host + "]" : host) + ":" + std::to_string(port) + "/";
+}
+
+void serve(const ServeOptions& o) {
+  // Blocked before any thread starts, so that every thread inherits the mask and SIGINT and
+  // SIGTERM reach only the waiter below, which stops the server cleanly.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  std::unique_ptr<const NavigatorApi> api;
+  try {
+    api = std::make_unique<const NavigatorApi>(ApiOptions{o.db, o.resolution});
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("--db: ") + e.what());
+  }
+  httplib::Server server;
+  add_routes(server, *api);
+  add_error_handling(server);
+  const int port = bind(server, o);
+  if (o.host != "127.0.0.1" && o.host != "localhost" && o.host != "::1")
+    std::fprintf(stderr, "brdfnav: warning: --host %s: reachable from other machines\n",
+                 o.host.c_str());
+  std::printf("brdfnav: navigator for %s at %s (Ctrl-C stops)\n", o.db.c_str(),
+              url(o.host, port).c_str());
+  std::fflush(stdout);
+
+  std::atomic<bool> signalled = false;
+  std::thread waiter([&] {
+    int signal = 0;
+    sigwait(&stop_signals, &signal);
+    signalled = true;
+    server.stop();
+  });
+  const bool ok = server.listen_after_bind();
+  if (!signalled) pthread_kill(waiter.native_handle(), SIGTERM);  // wakes the waiter
+  waiter.join();
+  if (!ok) throw std::runtime_error("serve: the server stopped on an error");
+  std::puts("brdfnav: stopped");
+}
+
+}  // namespace
+
+void add_serve_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "serve", "Serve the navigator in the browser: a material, its variations, one radius");
+  auto o = std::make_shared<ServeOptions>();
+  cmd->add_option("--db", o->db, "Database directory (brdfnav precompute)")->required();
+  cmd->add_option("--port", o->port, "TCP port (0: any free port)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 65535));
+  cmd->add_option("--host", o->host, "Address to listen on")->capture_default_str();
+  cmd->add_option("--resolution", o->resolution, "Thumbnail width and height in pixels")
+      ->capture_default_str()
+      ->check(CLI::Range(8, 1024));
+  cmd->callback([o] { serve(*o); });
+}
+
+}  // namespace brdfnav::cli

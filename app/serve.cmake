@@ -1,0 +1,19 @@
+# `brdfnav serve` (issue #6): the JSON API over cpp-httplib and the page of app/web/, embedded
+# into the executable. Included by app/CMakeLists.txt after brdfnav_cli is defined.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(brdfnav_httplib REQUIRED IMPORTED_TARGET cpp-httplib)
+find_package(nlohmann_json 3 CONFIG REQUIRED)
+
+set(brdfnav_web_files index.html app.js style.css favicon.svg)
+list(TRANSFORM brdfnav_web_files PREPEND ${CMAKE_CURRENT_SOURCE_DIR}/web/ OUTPUT_VARIABLE web_deps)
+list(JOIN brdfnav_web_files "|" web_list)
+set(web_cpp ${CMAKE_CURRENT_BINARY_DIR}/web_assets.cpp)
+add_custom_command(OUTPUT ${web_cpp}
+  COMMAND ${CMAKE_COMMAND} -DOUT=${web_cpp} -DROOT=${CMAKE_CURRENT_SOURCE_DIR}/web
+          -DFILES=${web_list} -P ${PROJECT_SOURCE_DIR}/cmake/embed_web.cmake
+  DEPENDS ${web_deps} ${PROJECT_SOURCE_DIR}/cmake/embed_web.cmake
+  COMMENT "Embedding app/web into brdfnav" VERBATIM)
+
+target_sources(brdfnav_cli PRIVATE cmd_serve.cpp serve_api.cpp ${web_cpp})
+target_include_directories(brdfnav_cli PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(brdfnav_cli PRIVATE PkgConfig::brdfnav_httplib nlohmann_json::nlohmann_json)

@@ -1,0 +1,304 @@
+#include "serve_api.h"
+
+#include <brdfnav/io/material_yaml.h>
+#include <brdfnav/io/navigation_yaml.h>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+#include <yaml-cpp/yaml.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace brdfnav::cli {
+
+namespace {
+
+using nlohmann::json;
+
+// The radius slider's range and start, in the metric's units (cube-root RMS): from just above
+// the embedding's noise to about the distance between a matte and a glossy material.
+constexpr double kRadiusMin = 0.002, kRadiusMax = 0.2, kRadiusStart = 0.03;
+constexpr int kMaxClusters = 32;
+
+// A request the API cannot answer; the message starts with the field at fault.
+class RequestError : public std::runtime_error {
+ public:
+  RequestError(const std::string& field, const std::string& what)
+      : std::runtime_error(field + ": " + what) {}
+};
+
+ApiResponse json_response(const json& body) {
+  return {200, "application/json", body.dump()};
+}
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+// The request body as a JSON object with only the `allowed` keys.
+json parse_body(std::string_view body, const std::vector<std::string>& allowed) {
+  json request;
+  try {
+    request = json::parse(body);
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for 1e999
+    throw RequestError("body", std::string("malformed JSON: ") + e.what());
+  }
+  if (!request.is_object()) throw RequestError("body", "expected a JSON object");
+  for (const auto& [key, value] : request.items())
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+      throw RequestError(key, "unknown field (expected one of: " + join(allowed) + ")");
+  return request;
+}
+
+const json& require(const json& request, const std::string& field) {
+  const auto it = request.find(field);
+  if (it == request.end()) throw RequestError(field, "missing");
+  return *it;
+}
+
+std::optional<std::string> optional_string(const json& request, const std::string& field) {
+  const auto it = request.find(field);
+  if (it == request.end()) return std::nullopt;
+  if (!it->is_string()) throw RequestError(field, "expected a string, got " + it->dump());
+  return it->get<std::string>();
+}
+
+// Every query needs the material's model in the database.
+Material check_held(const Database& db, Material m) {
+  if (!db.embedding(m.model))
+    throw RequestError("material.model", "the database holds no model '" +
+                                             std::string(model_info(m.model).name) + "'");
+  return m;
+}
+
+// Whether `value` nests more than `levels` arrays or objects; looks no deeper than that, so a
+// hostile body cannot make this, or the recursive dump() below, run out of stack.
+bool deeper_than(const json& value, int levels) {
+  if (!value.is_structured()) return false;
+  if (levels == 0) return true;
+  for (const json& child : value)
+    if (deeper_than(child, levels - 1)) return true;
+  return false;
+}
+
+// JSON is YAML's flow syntax, so the material reader of the YAML files reads a JSON material
+// as it is, with the same checks and messages ("material:1: params.n: ...").
+Material read_material(const Database& db, const json& value) {
+  if (!value.is_object()) throw RequestError("material", "expected an object, got " + value.dump());
+  if (deeper_than(value, 3)) throw RequestError("material", "nested too deeply");
+  return check_held(db, material_from_node(YAML::Load(value.dump()), "material", false));
+}
+
+json material_json(const Material& m) {
+  const ModelInfo& info = model_info(m.model);
+  json params = json::object();
+  for (std::size_t i = 0; i < info.params.size(); ++i)
+    params[std::string(info.params[i].name)] = m.params[i];
+  return {{"model", info.name},
+          {"params", params},
+          {"rho_d", {m.rho_d[0], m.rho_d[1], m.rho_d[2]}},
+          {"rho_s", {m.rho_s[0], m.rho_s[1], m.rho_s[2]}},
+          {"colorspace", m.colorspace}};
+}
+
+double read_radius(const json& value) {
+  if (!value.is_number()) throw RequestError("radius", "expected a number, got " + value.dump());
+  const double radius = value.get<double>();
+  if (!std::isfinite(radius) || radius <= 0)
+    throw RequestError("radius", "must be a positive finite distance, got " + value.dump());
+  return radius;
+}
+
+Tab read_tab(const json& value) {
+  if (value.is_string())
+    if (const std::optional<Tab> tab = find_tab(value.get<std::string>())) return *tab;
+  std::vector<std::string> names;
+  for (Tab t : kTabs) names.emplace_back(tab_name(t));
+  throw RequestError("tab",
+                     "unknown tab " + value.dump() + " (expected one of: " + join(names) + ")");
+}
+
+int read_clusters(const json& request) {
+  const auto it = request.find("k");
+  if (it == request.end()) return 8;
+  if (!it->is_number_integer() || *it < 1 || *it > kMaxClusters)
+    throw RequestError(
+        "k", "expected an integer in [1, " + std::to_string(kMaxClusters) + "], got " + it->dump());
+  return it->get<int>();
+}
+
+json neighbor_json(const Neighbor& n) {
+  json flags = json::array();
+  if (n.at_boundary) flags.push_back("at_boundary");
+  if (n.clamped) flags.push_back("clamped");
+  return {{"tab", tab_name(n.tab)},
+          {"label", n.label},
+          {"distance", n.distance},
+          {"flags", flags},
+          {"material", material_json(n.material)}};
+}
+
+json model_json(const ModelInfo& info, const ParamGrid& grid) {
+  json params = json::array();
+  for (std::size_t d = 0; d < info.params.size(); ++d) {
+    const ParamSpec& p = info.params[d];
+    params.push_back({{"name", p.name},
+                      {"unit", p.unit},
+                      {"description", p.description},
+                      {"valid", {p.valid_min, p.valid_max}},
+                      {"default", p.default_value},
+                      {"scale", p.scale == Scale::log ? "log" : "linear"},
+                      {"grid", grid.axis(d)}});
+  }
+  return {{"name", info.name}, {"title", info.title}, {"params", params}};
+}
+
+json database_json(const Database& db) {
+  const Manifest& m = db.manifest();
+  return {{"dir", db.dir().string()},
+          {"manifest_sha1", file_sha1(db.dir() / "manifest.yaml")},
+          {"profile", m.profile},
+          {"resolution", m.resolution},
+          {"scene", m.scene},
+          {"environment", {{"path", m.env_path}, {"pixel_sha1", m.env_hash}}},
+          {"components", m.components}};
+}
+
+// The request's display and view, or the config's defaults; each checked against the config.
+std::pair<std::string, std::string> read_display_view(const ocio::ColorPipeline& colour,
+                                                      const json& request) {
+  const std::string display =
+      optional_string(request, "display").value_or(colour.default_display());
+  try {
+    colour.views(display);
+  } catch (const ocio::ColorError& e) {
+    throw RequestError("display", e.what());
+  }
+  const std::string view = optional_string(request, "view").value_or(colour.default_view(display));
+  try {
+    colour.validate(display, view);
+  } catch (const ocio::ColorError& e) {
+    throw RequestError("view", e.what());
+  }
+  return {display, view};
+}
+
+// 8-bit RGBA as a PNG file in memory.
+std::string encode_png(const std::vector<std::uint8_t>& rgba, int width, int height) {
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput proxy(bytes);
+  const char* name = "thumbnail.png";  // chooses the format; nothing is written to disk
+  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(name);
+  const OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
+  if (!out || !out->set_ioproxy(&proxy) || !out->open(name, spec) ||
+      !out->write_image(OIIO::TypeDesc::UINT8, rgba.data()) || !out->close())
+    throw std::runtime_error("cannot encode the thumbnail as PNG: " +
+                             (out ? out->geterror() : OIIO::geterror()));
+  return std::string(bytes.begin(), bytes.end());
+}
+
+// Runs `body`, turning the client's mistakes into 400 and anything else into 500.
+template <typename Body>
+ApiResponse answer(Body&& body) {
+  try {
+    return body();
+  } catch (const RequestError& e) {
+    return error_response(400, e.what());
+  } catch (const MaterialError& e) {
+    return error_response(400, e.what());
+  } catch (const NavigatorError& e) {
+    return error_response(400, e.what());
+  } catch (const std::exception& e) {
+    return error_response(500, e.what());
+  }
+}
+
+}  // namespace
+
+ApiResponse error_response(int status, const std::string& message) {
+  return {status, "application/json", json{{"error", message}}.dump()};
+}
+
+NavigatorApi::NavigatorApi(const ApiOptions& options)
+    : navigator_(Navigator::open(options.db)),
+      thumbnails_(navigator_.database(), options.resolution) {}
+
+ApiResponse NavigatorApi::info() const {
+  return answer([&] {
+    const Database& db = navigator_.database();
+    json models = json::array();
+    std::optional<Material> start;
+    for (const ModelInfo& m : brdfnav::models()) {
+      const ModelEmbedding* embedding = db.embedding(m.id);
+      if (!embedding) continue;
+      models.push_back(model_json(m, embedding->grid()));
+      if (!start) start = default_material(m.id);
+    }
+    json tabs = json::array();
+    for (Tab t : kTabs) tabs.push_back(tab_name(t));
+    json displays = json::array();
+    for (const std::string& d : colour_.displays())
+      displays.push_back({{"name", d}, {"views", colour_.views(d)}});
+    return json_response(
+        {{"models", models},
+         {"tabs", tabs},
+         {"displays", displays},
+         {"colour_config", colour_.describe()},
+         {"radius", {{"min", kRadiusMin}, {"max", kRadiusMax}, {"start", kRadiusStart}}},
+         {"start", material_json(*start)},
+         {"thumbnail_resolution", thumbnails_.resolution()},
+         {"max_body_bytes", kMaxBodyBytes},
+         {"database", database_json(db)}});
+  });
+}
+
+ApiResponse NavigatorApi::neighbors(std::string_view body) const {
+  return answer([&] {
+    const json request = parse_body(body, {"material", "radius", "tab", "k"});
+    const Material current = read_material(navigator_.database(), require(request, "material"));
+    const double radius = read_radius(require(request, "radius"));
+    const Tab tab = read_tab(require(request, "tab"));
+    json list = json::array();
+    for (const Neighbor& n : navigator_.neighbors(current, radius, tab, read_clusters(request)))
+      list.push_back(neighbor_json(n));
+    return json_response({{"neighbors", list}});
+  });
+}
+
+ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
+  return answer([&] {
+    const json request = parse_body(body, {"material", "display", "view"});
+    const Material m = read_material(navigator_.database(), require(request, "material"));
+    const auto [display, view] = read_display_view(colour_, request);
+    const Image image = thumbnails_.render(m);
+    const std::vector<std::uint8_t> rgba =
+        colour_.apply(image.rgba.data(), image.width, image.height, display, view);
+    return ApiResponse{200, "image/png", encode_png(rgba, image.width, image.height)};
+  });
+}
+
+ApiResponse NavigatorApi::export_yaml(std::string_view body) const {
+  return answer([&] {
+    const json request = parse_body(body, {"material"});
+    const Material m = read_material(navigator_.database(), require(request, "material"));
+    return ApiResponse{200, "application/yaml", export_to_yaml(navigator_, m)};
+  });
+}
+
+ApiResponse NavigatorApi::import_yaml(std::string_view body, std::string_view name) const {
+  return answer([&] {
+    return json_response(
+        {{"material",
+          material_json(check_held(navigator_.database(),
+                                   parse_material_yaml(body, name.empty() ? "upload" : name)))}});
+  });
+}
+
+}  // namespace brdfnav::cli

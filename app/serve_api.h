@@ -1,0 +1,66 @@
+// The JSON API of `brdfnav serve` (docs/SERVE.md) over the neighbour service, the thumbnails
+// and the colour pipeline, kept apart from the HTTP server so that every answer, good or bad,
+// is a plain value: a status, a content type and a body.
+#pragma once
+
+#include <brdfnav/navigator.h>
+#include <brdfnav/ocio/color_pipeline.h>
+#include <brdfnav/thumbnails.h>
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace brdfnav::cli {
+
+// The largest request body the API reads; a material or an export is a few kilobytes.
+inline constexpr std::size_t kMaxBodyBytes = 64 * 1024;
+
+struct ApiResponse {
+  int status = 200;
+  std::string content_type;
+  std::string body;
+};
+
+// {"error": message} with status 400 (the client's mistake) or 500 (the server's).
+ApiResponse error_response(int status, const std::string& message);
+
+struct ApiOptions {
+  std::filesystem::path db;
+  int resolution = 128;  // thumbnail width and height
+};
+
+// Opens the database, the thumbnails and the colour pipeline once; every method is const and
+// may be called from any number of threads at once, as the three services allow. Requests that
+// are malformed or ask for something the database or the colour config lacks get status 400
+// with {"error": "<field>: <what is wrong>"}.
+class NavigatorApi {
+ public:
+  explicit NavigatorApi(const ApiOptions& options);
+  NavigatorApi(const NavigatorApi&) = delete;  // thumbnails_ refers into navigator_
+  NavigatorApi& operator=(const NavigatorApi&) = delete;
+
+  // GET /api/info: models and parameter tables, tabs, displays and views, radius range, the
+  // start material and the database's provenance.
+  ApiResponse info() const;
+  // POST /api/neighbors {material, radius, tab[, k]} -> {neighbors: [{tab, label, distance,
+  // flags, material}]}.
+  ApiResponse neighbors(std::string_view body) const;
+  // POST /api/thumbnail {material[, display, view]} -> image/png.
+  ApiResponse thumbnail(std::string_view body) const;
+  // POST /api/export {material} -> the YAML `brdfnav export` writes.
+  ApiResponse export_yaml(std::string_view body) const;
+  // POST /api/import[?name=FILE] (a material YAML file, or an export) -> {material}; errors
+  // name FILE (default "upload") and the line.
+  ApiResponse import_yaml(std::string_view body, std::string_view name) const;
+
+  const Navigator& navigator() const { return navigator_; }
+
+ private:
+  Navigator navigator_;
+  Thumbnails thumbnails_;
+  ocio::ColorPipeline colour_;
+};
+
+}  // namespace brdfnav::cli

@@ -1,0 +1,421 @@
+// The navigator page: state (history, tab, radius, display), the API calls of `brdfnav serve`
+// (docs/SERVE.md) and the drawing of the stage. No framework, no build step.
+
+const TABS = [
+  ['diffuse', 'Diffuse colour'],
+  ['specular', 'Specular colour'],
+  ['lobe', 'Lobe shape'],
+  ['models', 'Other models'],
+  ['gallery', 'Start gallery'],
+];
+const SLIDER_STEPS = 100;  // the radius slider's positions, spaced evenly in log(radius)
+const KEY_STEP = 5;        // slider positions per + / - key press
+const PROGRESS_DELAY_MS = 100;
+const THUMBNAIL_CACHE = 400;
+
+const $ = (selector) => document.querySelector(selector);
+const state = {
+  info: null,
+  history: [],  // the materials visited; `at` is the current one
+  at: -1,
+  tab: 'gallery',
+  radius: 0,
+  display: '',
+  view: '',
+};
+let generation = 0;  // bumped by every redraw; answers for an older one are dropped
+let neighborQuery = null;
+
+// ---- the API ------------------------------------------------------------------------------
+
+async function call(path, body, options = {}) {
+  const init = { method: body === undefined ? 'GET' : 'POST', signal: options.signal };
+  if (body !== undefined) {
+    init.body = typeof body === 'string' ? body : JSON.stringify(body);
+    init.headers = { 'Content-Type': options.type || 'application/json' };
+  }
+  const response = await fetch(path, init);
+  if (!response.ok) {
+    const text = await response.text();
+    let message = `${path}: HTTP ${response.status}`;
+    try { message = JSON.parse(text).error || message; } catch { /* not JSON */ }
+    throw new Error(message);
+  }
+  return response;
+}
+
+// Thumbnail object URLs by (material, display, view), oldest first: going back, or to a
+// variation already on screen, shows its image at once.
+const thumbnails = new Map();
+
+function thumbnail(material) {
+  const key = JSON.stringify([material, state.display, state.view]);
+  let url = thumbnails.get(key);
+  if (!url) {
+    url = call('/api/thumbnail', { material, display: state.display, view: state.view })
+      .then((r) => r.blob())
+      .then((blob) => URL.createObjectURL(blob));
+    url.catch(() => thumbnails.delete(key));
+    thumbnails.set(key, url);
+    if (thumbnails.size > THUMBNAIL_CACHE) {
+      const [oldest, old] = thumbnails.entries().next().value;
+      thumbnails.delete(oldest);
+      old.then(URL.revokeObjectURL, () => {});
+    }
+  }
+  return url;
+}
+
+// ---- progress: shown only when the work takes longer than PROGRESS_DELAY_MS -----------------
+
+const progress = {
+  timer: 0,
+  start(text) {
+    clearTimeout(this.timer);
+    this.set(text, 0, 0);
+    this.timer = setTimeout(() => { $('#progress').hidden = false; }, PROGRESS_DELAY_MS);
+  },
+  set(text, done, total) {
+    $('#progress span').textContent = text;
+    const bar = $('#progress progress');
+    if (total > 0) { bar.max = total; bar.value = done; } else { bar.removeAttribute('value'); }
+  },
+  stop() {
+    clearTimeout(this.timer);
+    $('#progress').hidden = true;
+  },
+};
+
+// ---- formatting -----------------------------------------------------------------------------
+
+const number = (x) => (Math.abs(x) >= 1e4 || (x !== 0 && Math.abs(x) < 1e-3)
+  ? x.toExponential(3) : Number(x.toPrecision(4)).toString());
+const rgb = (c) => c.map((x) => x.toFixed(3)).join(' ');
+
+function modelInfo(name) {
+  return state.info.models.find((m) => m.name === name);
+}
+
+// Variation i and i + n/2 face each other across the centre when each direction's opposite
+// ("n+" / "n-", "ab+45" / "ab+225") follows its partner by half the ring; labels without a
+// partner (other models, the gallery) keep the service's order.
+function opposite(label) {
+  const hue = /^ab\+(\d+)$/.exec(label);
+  if (hue) return `ab+${(Number(hue[1]) + 180) % 360}`;
+  if (label.endsWith('+')) return `${label.slice(0, -1)}-`;
+  if (label.endsWith('-')) return `${label.slice(0, -1)}+`;
+  return null;
+}
+
+function facingOrder(neighbors) {
+  const firsts = [];
+  const seconds = [];
+  const paired = new Set();
+  for (const n of neighbors) {
+    if (paired.has(n)) continue;
+    const partner = neighbors.find((m) => !paired.has(m) && m !== n && m.label === opposite(n.label));
+    if (!partner) return neighbors;
+    firsts.push(n);
+    seconds.push(partner);
+    paired.add(n).add(partner);
+  }
+  return firsts.concat(seconds);
+}
+
+// ---- drawing --------------------------------------------------------------------------------
+
+function drawReadout(material) {
+  const info = modelInfo(material.model);
+  $('#readout h2').textContent = `${info.title} (${info.name})`;
+  const rows = info.params.map((p) => [p.name, number(material.params[p.name]), p.unit,
+    p.description]);
+  rows.push(['rho_d', rgb(material.rho_d), 'RGB', 'diffuse albedo'],
+    ['rho_s', rgb(material.rho_s), 'RGB', 'specular scale'],
+    ['colorspace', material.colorspace, '', 'colour space of rho_d and rho_s']);
+  $('#readout tbody').replaceChildren(...rows.map(([name, value, unit, help]) => {
+    const tr = document.createElement('tr');
+    tr.title = help;
+    tr.dataset.key = name;
+    for (const text of [name, value, unit === '1' ? '' : unit]) {
+      const td = document.createElement('td');
+      td.textContent = text;
+      tr.append(td);
+    }
+    return tr;
+  }));
+}
+
+// "<title>", "d = 0.0300" and the flags, as elements (labels are data, never markup).
+function caption(n) {
+  const title = n.tab === 'models' || n.tab === 'gallery' ? modelInfo(n.label).title : n.label;
+  const span = document.createElement('span');
+  span.className = 'caption';
+  const name = document.createElement('b');
+  name.textContent = title;
+  const line = document.createElement('span');
+  line.textContent = `d = ${n.distance.toFixed(4)}`;
+  span.append(name, line);
+  for (const flag of n.flags) {
+    const badge = document.createElement('span');
+    badge.className = 'flag';
+    badge.textContent = flag.replace('_', ' ');
+    line.append(' ', badge);
+  }
+  return span;
+}
+
+// The cells around the border of a side x side grid, clockwise from the second cell of the
+// top row, so that cell p and cell p + count / 2 mirror each other through the centre.
+function ringCells(side) {
+  const last = side - 1;
+  const cells = [];
+  for (let c = 1; c <= last; c += 1) cells.push([0, c]);
+  for (let r = 1; r <= last; r += 1) cells.push([r, last]);
+  for (let c = last - 1; c >= 0; c -= 1) cells.push([last, c]);
+  for (let r = last - 1; r >= 0; r -= 1) cells.push([r, 0]);
+  return cells;
+}
+
+// The variations on the ring of a grid around the centre (2 x 2 cells or more, as in the
+// contact sheets), spread evenly; facing pairs stay on opposite cells.
+function drawRing(neighbors) {
+  const ordered = facingOrder(neighbors);
+  let side = 4;
+  while (4 * (side - 1) < ordered.length) side += 1;
+  const cells = ringCells(side);
+  const stage = $('#stage');
+  stage.style.setProperty('--side', side);
+  const figures = ordered.map((n, i) => {
+    const [row, column] = cells[Math.floor((i * cells.length) / ordered.length)];
+    const button = document.createElement('button');
+    button.type = 'button';
+    button.className = 'variation';
+    button.style.gridArea = `${row + 1} / ${column + 1}`;
+    Object.assign(button.dataset, {
+      tab: n.tab, label: n.label, distance: n.distance, flags: n.flags.join(' '),
+      material: JSON.stringify(n.material),
+    });
+    button.title = `${n.material.model} ${JSON.stringify(n.material.params)}`;
+    // Already at the end of the database grid (or of the colour range) in this direction.
+    if (n.distance < 1e-3 * state.radius) button.classList.add('no-step');
+    const img = document.createElement('img');
+    img.alt = '';  // the caption names it
+    button.append(img, caption(n));
+    button.addEventListener('click', () => navigate(n.material));
+    return button;
+  });
+  $('#ring').replaceChildren(...figures);
+  $('#empty').hidden = neighbors.length > 0;
+  return ordered.map((n, i) => [n, figures[i].querySelector('img')]);
+}
+
+// Puts the thumbnail on `img` unless a newer redraw has begun meanwhile: its images win.
+async function show(img, url, gen) {
+  const src = await url;
+  if (gen !== generation) return;
+  img.src = src;
+  await img.decode();
+}
+
+function showError(message) {
+  $('#error').textContent = message;
+  $('#error').hidden = !message;
+}
+
+// Redraws the stage for the current material, tab, radius and display. Resolves when every
+// image is on screen; <body data-ready> says so to tests.
+async function redraw() {
+  const gen = ++generation;
+  const material = state.history[state.at];
+  document.body.dataset.ready = 'false';
+  $('#back').disabled = state.at <= 0;
+  $('#forward').disabled = state.at >= state.history.length - 1;
+  for (const tab of document.querySelectorAll('#tabs [role=tab]'))
+    tab.setAttribute('aria-selected', String(tab.dataset.tab === state.tab));
+  const centre = $('#centre');
+  centre.dataset.material = JSON.stringify(material);
+  centre.querySelector('figcaption').textContent = modelInfo(material.model).title;
+  drawReadout(material);
+  neighborQuery?.abort();
+  neighborQuery = new AbortController();
+  progress.start('Finding variations\u2026');
+  try {
+    const centreShown = show(centre.querySelector('img'), thumbnail(material), gen);
+    centreShown.catch(() => {});  // awaited below, unless this redraw is overtaken first
+    const { neighbors } = await (await call('/api/neighbors',
+      { material, radius: state.radius, tab: state.tab }, { signal: neighborQuery.signal })).json();
+    if (gen !== generation) return;
+    const images = drawRing(neighbors);
+    let done = 0;
+    const total = images.length + 1;
+    const step = () => progress.set(`Rendering thumbnails ${++done} / ${total}`, done, total);
+    progress.set(`Rendering thumbnails 0 / ${total}`, 0, total);
+    await Promise.all([centreShown.then(step),
+      ...images.map(([n, img]) => show(img, thumbnail(n.material), gen).then(step))]);
+    if (gen !== generation) return;
+    showError('');
+  } catch (error) {
+    if (error.name === 'AbortError' || gen !== generation) return;
+    showError(error.message);
+  }
+  progress.stop();
+  document.body.dataset.ready = 'true';
+}
+
+// ---- actions --------------------------------------------------------------------------------
+
+function navigate(material) {
+  state.history.splice(state.at + 1, Infinity, material);
+  state.at = state.history.length - 1;
+  redraw();
+}
+
+function move(by) {
+  const at = state.at + by;
+  if (at < 0 || at >= state.history.length) return;
+  state.at = at;
+  redraw();
+}
+
+const radiusAt = (position) => {
+  const { min, max } = state.info.radius;
+  return min * (max / min) ** (position / SLIDER_STEPS);
+};
+const positionOf = (radius) => {
+  const { min, max } = state.info.radius;
+  return Math.round((SLIDER_STEPS * Math.log(radius / min)) / Math.log(max / min));
+};
+
+function setRadius(position) {
+  const slider = $('#radius');
+  slider.value = Math.min(SLIDER_STEPS, Math.max(0, position));
+  state.radius = radiusAt(Number(slider.value));
+  $('#radius-value').textContent = state.radius.toFixed(4);
+}
+
+function selectTab(tab) {
+  state.tab = tab;
+  redraw();
+}
+
+async function exportYaml() {
+  try {
+    const material = state.history[state.at];
+    const text = await (await call('/api/export', { material })).text();
+    const link = document.createElement('a');
+    link.href = URL.createObjectURL(new Blob([text], { type: 'application/yaml' }));
+    link.download = `brdfnav-${material.model}.yaml`;
+    link.click();
+    setTimeout(() => URL.revokeObjectURL(link.href), 10000);
+  } catch (error) {
+    showError(`Export: ${error.message}`);
+  }
+}
+
+async function loadYaml(file) {
+  document.body.dataset.ready = 'false';  // until the loaded material is drawn
+  try {
+    const path = `/api/import?name=${encodeURIComponent(file.name)}`;
+    const answer = await call(path, await file.text(), { type: 'application/yaml' });
+    navigate((await answer.json()).material);
+  } catch (error) {
+    showError(error.message);
+    document.body.dataset.ready = 'true';
+  }
+}
+
+function fillViews() {
+  const display = state.info.displays.find((d) => d.name === state.display);
+  const select = $('#view');
+  select.replaceChildren(...display.views.map((v) => new Option(v, v)));
+  if (!display.views.includes(state.view)) [state.view] = display.views;
+  select.value = state.view;
+}
+
+function onKey(event) {
+  const target = event.target;
+  if (target.matches('select, input[type=file]') || event.ctrlKey || event.metaKey) return;
+  const alt = event.altKey;
+  const actions = {
+    '[': () => move(-1),
+    ']': () => move(1),
+    '+': () => changeRadius(KEY_STEP),
+    '=': () => changeRadius(KEY_STEP),
+    '-': () => changeRadius(-KEY_STEP),
+  };
+  TABS.forEach(([tab], i) => { actions[String(i + 1)] = () => selectTab(tab); });
+  let action = alt ? null : actions[event.key];
+  if (alt && event.key === 'ArrowLeft') action = () => move(-1);
+  if (alt && event.key === 'ArrowRight') action = () => move(1);
+  if (!action) return;
+  event.preventDefault();
+  action();
+}
+
+function changeRadius(steps) {
+  setRadius(Number($('#radius').value) + steps);
+  redraw();
+}
+
+// ---- start ----------------------------------------------------------------------------------
+
+function describeDatabase(info) {
+  const db = info.database;
+  const env = db.environment.path.split('/').pop();
+  return `Database ${db.dir}: profile ${db.profile}, ${db.resolution} px, ${db.scene}, ${env}` +
+    ` \u00b7 ${info.colour_config}`;
+}
+
+function wire() {
+  $('#tabs').replaceChildren(...TABS.filter(([tab]) => state.info.tabs.includes(tab))
+    .map(([tab, title], i) => {
+      const button = document.createElement('button');
+      Object.assign(button, { type: 'button', textContent: title, title: `${title} (${i + 1})` });
+      button.setAttribute('role', 'tab');
+      button.dataset.tab = tab;
+      button.addEventListener('click', () => selectTab(tab));
+      return button;
+    }));
+  $('#back').addEventListener('click', () => move(-1));
+  $('#forward').addEventListener('click', () => move(1));
+  let pending = 0;
+  $('#radius').addEventListener('input', (event) => {
+    setRadius(Number(event.target.value));
+    document.body.dataset.ready = 'false';  // a redraw is coming
+    clearTimeout(pending);
+    pending = setTimeout(redraw, 120);  // one query when the slider rests, not one per pixel
+  });
+  $('#display').replaceChildren(...state.info.displays.map((d) => new Option(d.name, d.name)));
+  $('#display').addEventListener('change', (event) => {
+    state.display = event.target.value;
+    fillViews();
+    redraw();
+  });
+  $('#view').addEventListener('change', (event) => { state.view = event.target.value; redraw(); });
+  $('#export').addEventListener('click', exportYaml);
+  $('#load-file').addEventListener('change', (event) => {
+    const [file] = event.target.files;
+    if (file) loadYaml(file);
+    event.target.value = '';  // the same file again is a new load
+  });
+  $('#error').addEventListener('click', () => showError(''));
+  document.addEventListener('keydown', onKey);
+}
+
+async function start() {
+  try {
+    state.info = await (await call('/api/info')).json();
+  } catch (error) {
+    showError(`Cannot reach the navigator: ${error.message}`);
+    document.body.dataset.ready = 'true';
+    return;
+  }
+  $('#provenance').textContent = describeDatabase(state.info);
+  [state.display] = state.info.displays.map((d) => d.name);
+  wire();
+  fillViews();
+  setRadius(positionOf(state.info.radius.start));
+  navigate(state.info.start);
+}
+
+start();

@@ -1,0 +1,382 @@
+// `brdfnav serve` end to end: the page in Debian's headless Chromium, driven by Playwright, and
+// the JSON API's answers to bad requests. Builds a `test`-profile database, starts the server on
+// a free loopback port and keeps a screenshot of every step in the artefacts directory.
+//
+//   node tests/browser/navigator.test.mjs [BRDFNAV_CLI] [ARTEFACTS_DIR]
+import { after, before, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFile, spawn } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { promisify } from 'node:util';
+import { fileURLToPath } from 'node:url';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const root = path.resolve(here, '../..');
+const cli = path.resolve(process.argv[2] || path.join(root, 'build/bin/brdfnav'));
+const artefacts = path.resolve(process.argv[3] || path.join(root, 'build/browser-artifacts'));
+const CHROMIUM = '/usr/bin/chromium';
+const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic',
+  '--no-first-run', '--disable-background-networking', '--disable-component-update',
+  '--disable-sync'];
+
+let chromium;
+let YAML;
+try {
+  ({ chromium } = await import('playwright-core'));
+  YAML = await import('yaml');
+} catch (error) {
+  throw new Error(`${error.message}\n(run \`npm ci\` in tests/browser; ./run test does)`);
+}
+
+const run = promisify(execFile);
+const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'brdfnav-browser-'));
+let server;
+let url;
+let context;
+let page;
+const pageErrors = [];
+let shots = 0;
+
+// The URL the server prints once it listens.
+function startServer(db) {
+  server = spawn(cli, ['serve', '--db', db, '--port', '0'], { stdio: ['ignore', 'pipe', 'pipe'] });
+  const log = fs.createWriteStream(path.join(artefacts, 'serve.log'));
+  server.stderr.pipe(log);
+  return new Promise((resolve, reject) => {
+    let out = '';
+    const timer = setTimeout(() => reject(new Error(`no URL from serve: ${out}`)), 60000);
+    server.stdout.on('data', (chunk) => {
+      out += chunk;
+      const found = /http:\/\/\S+/.exec(out);
+      if (found) { clearTimeout(timer); resolve(found[0]); }
+    });
+    server.on('exit', (code) => reject(new Error(`serve exited with ${code}: ${out}`)));
+  });
+}
+
+before(async () => {
+  fs.mkdirSync(artefacts, { recursive: true });
+  for (const old of fs.readdirSync(artefacts)) fs.rmSync(path.join(artefacts, old), { force: true });
+  const db = path.join(tmp, 'db');
+  const { stderr } = await run(cli, ['precompute', '--profile', 'test', '--out', db],
+    { maxBuffer: 64 << 20 });
+  fs.writeFileSync(path.join(artefacts, 'precompute.log'), stderr);
+  url = await startServer(db);
+  context = await chromium.launchPersistentContext(path.join(tmp, 'chromium-profile'), {
+    executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS,
+    viewport: { width: 1400, height: 950 }, acceptDownloads: true,
+  });
+  page = context.pages()[0] || await context.newPage();
+  page.on('pageerror', (error) => pageErrors.push(error.message));
+}, { timeout: 900000 });
+
+after(async () => {
+  await context?.close();
+  if (server && server.exitCode === null) {
+    const exited = new Promise((resolve) => server.on('exit', resolve));
+    server.kill('SIGTERM');
+    assert.equal(await exited, 0, 'serve stops cleanly on SIGTERM');
+  }
+  fs.rmSync(tmp, { recursive: true, force: true });
+});
+
+// ---- helpers --------------------------------------------------------------------------------
+
+async function settled() {
+  await page.waitForFunction(() => document.body.dataset.ready === 'true', null,
+    { timeout: 60000 });
+}
+
+async function shot(name) {
+  shots += 1;
+  const file = path.join(artefacts, `${String(shots).padStart(2, '0')}-${name}.png`);
+  await page.screenshot({ path: file, fullPage: true });
+}
+
+const centre = async () => JSON.parse(await page.locator('#centre').getAttribute('data-material'));
+
+async function variations() {
+  return page.locator('.variation').evaluateAll((buttons) => buttons.map((b) => ({
+    tab: b.dataset.tab,
+    label: b.dataset.label,
+    distance: Number(b.dataset.distance),
+    flags: b.dataset.flags ? b.dataset.flags.split(' ') : [],
+    material: JSON.parse(b.dataset.material),
+  })));
+}
+
+async function selectTab(tab) {
+  await page.click(`#tabs [data-tab=${tab}]`);
+  await settled();
+  assert.equal(await page.getAttribute(`#tabs [data-tab=${tab}]`, 'aria-selected'), 'true');
+}
+
+async function setSlider(position) {
+  await page.locator('#radius').fill(String(position));
+  await settled();
+  return Number(await page.locator('#radius-value').textContent());
+}
+
+async function api(pathname, body, type = 'application/json') {
+  const init = body === undefined ? {} : { method: 'POST', body, headers: { 'Content-Type': type } };
+  const response = await fetch(new URL(pathname, url), init);
+  const text = await response.text();
+  return { status: response.status, type: response.headers.get('content-type'), text };
+}
+
+const info = async () => JSON.parse((await api('/api/info')).text);
+
+// ---- the page -------------------------------------------------------------------------------
+
+let start;
+let chosen;
+
+test('the page opens on the start gallery around the start material', async () => {
+  await page.goto(url);
+  await settled();
+  const { start: expected, models } = await info();
+  start = await centre();
+  assert.deepEqual(start, expected);
+  assert.equal(await page.getAttribute('#tabs [data-tab=gallery]', 'aria-selected'), 'true');
+  const offered = await variations();
+  assert.equal(offered.length, 8);
+  for (const v of offered) assert.equal(v.tab, 'gallery');
+  const readout = await page.locator('#readout tbody tr').evaluateAll(
+    (rows) => rows.map((r) => r.dataset.key));
+  const params = models.find((m) => m.name === start.model).params.map((p) => p.name);
+  assert.deepEqual(readout, [...params, 'rho_d', 'rho_s', 'colorspace']);
+  assert.match(await page.textContent('#provenance'), /profile test/);
+  assert.equal(await page.isDisabled('#back'), true);
+  await shot('start-gallery');
+});
+
+test('clicking a variation makes it the current material', async () => {
+  const offered = await variations();
+  const index = Math.max(0, offered.findIndex((v) => v.material.model !== start.model));
+  const pick = offered[index];
+  await page.locator('.variation').nth(index).click();
+  await settled();
+  chosen = await centre();
+  assert.deepEqual(chosen, pick.material);
+  const { models } = await info();
+  assert.match(await page.textContent('#readout h2'),
+    new RegExp(models.find((m) => m.name === chosen.model).title.replace(/[()]/g, '\\$&')));
+  assert.equal(await page.isDisabled('#back'), false);
+  assert.equal(await page.isDisabled('#forward'), true);
+  await shot('clicked-variation');
+});
+
+test('a larger radius moves the variations away', async () => {
+  await selectTab('diffuse');
+  const small = await setSlider(30);
+  const near = await variations();
+  await shot('diffuse-small-radius');
+  const large = await setSlider(70);
+  assert.ok(large > small);
+  const far = await variations();
+  await shot('diffuse-large-radius');
+  assert.equal(far.length, near.length);
+  for (const v of far) {
+    const before_ = near.find((n) => n.label === v.label);
+    assert.ok(v.distance >= before_.distance - 1e-9, `${v.label}: ${before_.distance} -> ${v.distance}`);
+    if (!before_.flags.includes('clamped')) assert.ok(v.distance > before_.distance, v.label);
+    if (!v.flags.includes('clamped')) assert.ok(Math.abs(v.distance - large) < 1e-3 * large + 1e-4);
+  }
+  await selectTab('lobe');
+  const lobeFar = await variations();
+  await setSlider(30);
+  const lobeNear = await variations();
+  for (const v of lobeFar) {
+    const before_ = lobeNear.find((n) => n.label === v.label);
+    assert.ok(v.distance >= before_.distance - 1e-6, `${v.label}: ${before_.distance} -> ${v.distance}`);
+  }
+  // The + key moves the slider up by one step of five positions.
+  const position = Number(await page.inputValue('#radius'));
+  await page.keyboard.press('+');
+  await settled();
+  assert.equal(Number(await page.inputValue('#radius')), position + 5);
+  await page.keyboard.press('-');
+  await settled();
+  assert.equal(Number(await page.inputValue('#radius')), position);
+});
+
+test('every tab offers its own variations', async () => {
+  const { models } = await info();
+  const current = await centre();
+  const params = models.find((m) => m.name === current.model).params.length;
+  const expected = {
+    diffuse: (n) => n === 10,
+    specular: (n) => n === 10,
+    lobe: (n) => n === 2 * params + (current.model === 'ward' ? 2 : 0),
+    models: (n) => n <= 8,
+    gallery: (n) => n === 8,
+  };
+  for (const [key, tab] of ['diffuse', 'specular', 'lobe', 'models', 'gallery'].entries()) {
+    await page.keyboard.press(String(key + 1));  // the tabs' shortcuts
+    await settled();
+    assert.equal(await page.getAttribute(`#tabs [data-tab=${tab}]`, 'aria-selected'), 'true');
+    const offered = await variations();
+    assert.ok(expected[tab](offered.length), `${tab}: ${offered.length} variations`);
+    for (const v of offered) assert.equal(v.tab, tab);
+    assert.equal(await page.isVisible('#empty'), offered.length === 0);
+    await shot(`tab-${tab}`);
+  }
+  await selectTab('lobe');
+});
+
+test('Export YAML downloads the export of the current material', async () => {
+  const current = await centre();
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export')]);
+  const file = path.join(artefacts, 'export.yaml');
+  await download.saveAs(file);
+  const doc = YAML.parse(fs.readFileSync(file, 'utf8'));
+  assert.equal(doc.brdfnav_material, 1);
+  for (const key of ['model', 'params', 'rho_d', 'rho_s', 'colorspace'])
+    assert.deepEqual(doc[key], current[key], key);
+  assert.equal(doc.provenance.profile, 'test');
+  assert.match(doc.provenance.manifest_sha1, /^[0-9A-F]{40}$/);
+  const others = (await info()).models.map((m) => m.name).filter((m) => m !== current.model);
+  assert.deepEqual(Object.keys(doc.equivalents), others);
+  for (const [model, e] of Object.entries(doc.equivalents)) {
+    assert.equal(e.material.model, model);
+    assert.ok(e.residual >= 0);
+  }
+  // The export is a material file for every other brdfnav command.
+  await run(cli, ['eval', '--material', file, '--wi', '0,0.5,1', '--wo', '0.3,0,1']);
+  await shot('exported');
+});
+
+test('back and forward walk the history', async () => {
+  await page.click('#back');
+  await settled();
+  assert.deepEqual(await centre(), start);
+  assert.equal(await page.isDisabled('#forward'), false);
+  await shot('back');
+  for (const [key, expected] of [[']', chosen], ['Alt+ArrowLeft', start],
+    ['Alt+ArrowRight', chosen], ['[', start]]) {
+    await page.keyboard.press(key);
+    await settled();
+    assert.deepEqual(await centre(), expected, key);
+  }
+});
+
+test('loading a YAML file starts from it, and a bad one is reported', async () => {
+  const material = {
+    model: 'he', params: { sigma: 0.3, tau: 6, eta: 2 },
+    rho_d: [0.1, 0.2, 0.3], rho_s: [0.7, 0.7, 0.7], colorspace: 'lin_rec709',
+  };
+  const file = path.join(tmp, 'chosen.yaml');
+  fs.writeFileSync(file, YAML.stringify({ brdfnav_material: 1, ...material }));
+  await page.setInputFiles('#load-file', file);
+  await settled();
+  assert.deepEqual(await centre(), material);
+  assert.equal(await page.isDisabled('#forward'), true, 'a load starts a new branch');
+  assert.match(await page.textContent('#readout tbody tr[data-key=sigma]'), /0\.3/);
+  await shot('loaded-yaml');
+
+  const bad = path.join(tmp, 'bad.yaml');
+  fs.writeFileSync(bad, YAML.stringify({ brdfnav_material: 1, ...material,
+    params: { sigma: -1, tau: 6, eta: 2 } }));
+  await page.setInputFiles('#load-file', bad);
+  await page.waitForSelector('#error:not([hidden])');
+  assert.match(await page.textContent('#error'), /bad\.yaml:\d+: params\.sigma/);
+  assert.deepEqual(await centre(), material, 'a bad file changes nothing');
+  await shot('bad-yaml');
+  await page.click('#error');
+});
+
+test('a progress indicator shows while thumbnails take longer than 100 ms', async () => {
+  await page.route('**/api/thumbnail', async (route) => {
+    await new Promise((resolve) => setTimeout(resolve, 600));
+    await route.continue();
+  });
+  await page.keyboard.press('2');
+  await page.waitForSelector('#progress:not([hidden])', { timeout: 2000 });
+  assert.match(await page.textContent('#progress'), /Rendering thumbnails \d+ \/ \d+|Finding/);
+  await shot('progress');
+  await settled();
+  assert.equal(await page.isVisible('#progress'), false);
+  await page.unroute('**/api/thumbnail');
+});
+
+test('the display and view selectors re-render through OCIO', async () => {
+  const before_ = await page.getAttribute('#centre img', 'src');
+  await page.selectOption('#view', 'ACES 1.0 SDR-video');
+  await settled();
+  assert.notEqual(await page.getAttribute('#centre img', 'src'), before_);
+  await shot('aces-view');
+  await page.selectOption('#display', 'Rec.1886');
+  await settled();
+  assert.equal(await page.inputValue('#view'), 'ACES 1.0 SDR-video', 'the view is kept');
+  await page.selectOption('#display', 'sRGB');
+  await page.selectOption('#view', 'Standard');
+  await settled();
+  assert.deepEqual(pageErrors, []);
+});
+
+// ---- the API's answers to bad requests ---------------------------------------------------------
+
+test('bad API requests get 400 naming the field, and the server keeps serving', async () => {
+  const m = (await info()).start;
+  const body = (fields) => JSON.stringify(fields);
+  const cases = [
+    ['/api/neighbors', body({ material: { ...m, model: 'nope' }, radius: 0.02, tab: 'lobe' }),
+      /^material:\d+: model: unknown model 'nope'/],
+    ['/api/neighbors', body({ material: m, radius: 'NaN', tab: 'lobe' }), /^radius: /],
+    ['/api/neighbors', `{"material": ${JSON.stringify(m)}, "radius": NaN, "tab": "lobe"}`,
+      /^body: malformed JSON/],
+    ['/api/neighbors', `{"material": ${JSON.stringify(m)}, "radius": 1e999, "tab": "lobe"}`,
+      /^body: malformed JSON/],
+    ['/api/neighbors', body({ material: m, radius: -0.02, tab: 'lobe' }), /^radius: must be/],
+    ['/api/neighbors', body({ material: m, radius: 0, tab: 'lobe' }), /^radius: must be/],
+    ['/api/neighbors', body({ material: m, tab: 'lobe' }), /^radius: missing/],
+    ['/api/neighbors', body({ material: m, radius: 0.02, tab: 'nope' }), /^tab: unknown tab/],
+    ['/api/neighbors', body({ material: m, radius: 0.02, tab: 7 }), /^tab: unknown tab/],
+    ['/api/neighbors', body({ material: m, radius: 0.02, tab: 'models', k: 0 }), /^k: /],
+    ['/api/neighbors', body({ material: m, radius: 0.02, tab: 'lobe', extra: 1 }),
+      /^extra: unknown field/],
+    ['/api/neighbors', body({ material: { ...m, rho_d: undefined }, radius: 0.02, tab: 'lobe' }),
+      /^material:\d+: rho_d: missing/],
+    ['/api/neighbors', body({ material: { ...m, rho_s: [1, 2] }, radius: 0.02, tab: 'lobe' }),
+      /^material:\d+: rho_s: expected 3 components/],
+    ['/api/neighbors', body({ material: { ...m, params: { n: -5 } }, radius: 0.02, tab: 'lobe' }),
+      /^material:\d+: params\.n: /],
+    ['/api/neighbors', body({ material: { ...m, params: { n: '5' } }, radius: 0.02, tab: 'lobe' }),
+      /^material:\d+: params\.n: expected a number/],
+    ['/api/neighbors', body({ material: 'blinn_phong', radius: 0.02, tab: 'lobe' }),
+      /^material: expected an object/],
+    ['/api/neighbors', body({ material: { params: { a: [[[[[1]]]]] } }, radius: 1, tab: 'lobe' }),
+      /^material: nested too deeply/],
+    ['/api/neighbors', '{"material": ', /^body: malformed JSON/],
+    ['/api/neighbors', '[1, 2]', /^body: expected a JSON object/],
+    ['/api/neighbors', ' '.repeat(70 * 1024), /^body: larger than 65536 bytes/],
+    ['/api/thumbnail', body({ material: m, display: 'nope' }), /^display: /],
+    ['/api/thumbnail', body({ material: m, view: 'nope' }), /^view: /],
+    ['/api/thumbnail', body({ display: 'sRGB' }), /^material: missing/],
+    ['/api/export', body({ material: { ...m, colorspace: '' } }), /^material:\d+: colorspace: /],
+    ['/api/import?name=x.yaml', 'model: he\n', /^x\.yaml:1: brdfnav_material: missing/],
+    ['/api/import', 'brdfnav_material: 1\nmodel: [', /^upload:\d+: syntax error/],
+  ];
+  for (const [pathname, payload, error] of cases) {
+    const answer = await api(pathname, payload);
+    assert.equal(answer.status, 400, `${pathname} ${payload.slice(0, 80)}: ${answer.text}`);
+    assert.match(answer.type, /^application\/json/);
+    assert.match(JSON.parse(answer.text).error, error, payload.slice(0, 80));
+  }
+  const missing = await api('/api/nope');
+  assert.equal(missing.status, 404);
+  assert.match(JSON.parse(missing.text).error, /not found/);
+
+  // All at once, good and bad: every request is answered, and the good ones correctly.
+  const good = body({ material: m, radius: 0.02, tab: 'diffuse' });
+  const answers = await Promise.all(cases.flatMap(([p, payload]) => [api(p, payload),
+    api('/api/neighbors', good)]));
+  answers.forEach((a, i) => assert.equal(a.status, i % 2 ? 200 : 400));
+  assert.equal(JSON.parse(answers[1].text).neighbors.length, 10);
+  assert.equal((await api('/api/info')).status, 200);
+  const png = await fetch(new URL('/api/thumbnail', url), { method: 'POST', body: body({ material: m }) });
+  assert.equal(png.headers.get('content-type'), 'image/png');
+  assert.equal(Buffer.from(await png.arrayBuffer()).subarray(1, 4).toString(), 'PNG');
+});
