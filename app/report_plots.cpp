@@ -108,16 +108,19 @@ void plot_spacing(Writer& w, const std::string& figure, const std::string& model
 }
 
 void plot_embedding(Writer& w, const EmbeddingStudy& s) {
-  PlotSeries median{"median", {}, {}, plot_colour(0), true};
-  PlotSeries p95{"95th percentile", {}, {}, plot_colour(1), true};
-  for (const EmbeddingErrors& r : s.rows) {
-    median.x.push_back(r.coefficients), median.y.push_back(r.median);
-    p95.x.push_back(r.coefficients), p95.y.push_back(r.p95);
-  }
+  std::vector<PlotSeries> series;
+  for (const auto& [name, rows] : {std::pair{"anywhere", &s.anywhere}, {"on nodes", &s.on_nodes}})
+    for (const bool p95 : {false, true}) {
+      PlotSeries p{
+          std::string(p95 ? "p95, " : "median, ") + name, {}, {}, plot_colour(series.size()), true};
+      for (const EmbeddingErrors& r : *rows)
+        p.x.push_back(r.coefficients), p.y.push_back(p95 ? r.p95 : r.median);
+      series.push_back(std::move(p));
+    }
   w.plot("embedding", "embedding_error.png",
-         {"Embedded vs exact distance, " + std::to_string(s.pairs) + " random pairs",
+         {"Embedded vs exact distance, " + std::to_string(s.pairs) + " random pairs each",
           "coefficients per channel", "relative error", true},
-         {median, p95});
+         series);
 }
 
 }  // namespace

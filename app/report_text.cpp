@@ -51,16 +51,19 @@ void emit_fig2(YAML::Emitter& out, const PellaciniStudy& s) {
 void emit_fig3(YAML::Emitter& out, const SceneStudy& s, std::size_t others) {
   out << YAML::Key << "figure3" << YAML::Value << YAML::BeginMap << YAML::Key << "alpha";
   seq(out << YAML::Value, s.alpha);
-  out << YAML::Key << "reference_alpha" << YAML::Value << s.alpha[s.reference_sample] << YAML::Key
-      << "tolerance" << YAML::Value << s.tolerance;
+  out << YAML::Key << "reference_sample" << YAML::Value << s.reference_sample << YAML::Key
+      << "reference_alpha" << YAML::Value << s.alpha[s.reference_sample] << YAML::Key << "tolerance"
+      << YAML::Value << s.tolerance;
   out << YAML::Key << "metrics" << YAML::Value << YAML::BeginMap;
   for (const SceneEntry& e : s.entries) {
     out << YAML::Key << e.name << YAML::Value << YAML::BeginMap << YAML::Key << "scale"
         << YAML::Value << e.agreement.scale << YAML::Key << "within" << YAML::Value
-        << e.agreement.within << YAML::Key << "from_reference";
-    const Eigen::VectorXd row = e.distances.row(Eigen::Index(s.reference_sample));
-    seq(out << YAML::Value, {row.data(), row.data() + row.size()});
-    out << YAML::EndMap;
+        << e.agreement.within << YAML::Key << "distances" << YAML::Value << YAML::BeginSeq;
+    for (Eigen::Index i = 0; i < e.distances.rows(); ++i) {
+      const Eigen::VectorXd row = e.distances.row(i);  // unscaled; symmetric
+      seq(out, {row.data(), row.data() + row.size()});
+    }
+    out << YAML::EndSeq << YAML::EndMap;
   }
   out << YAML::EndMap << YAML::Key << "natural_maps_agree" << YAML::Value << fig3_claim(s, others)
       << YAML::EndMap;
@@ -86,12 +89,16 @@ void emit_spacing(YAML::Emitter& out, const char* figure, const char* parameter,
 
 void emit_embedding(YAML::Emitter& out, const EmbeddingStudy& s) {
   out << YAML::Key << "embedding" << YAML::Value << YAML::BeginMap << YAML::Key << "pairs"
-      << YAML::Value << s.pairs << YAML::Key << "rows" << YAML::Value << YAML::BeginSeq;
-  for (const EmbeddingErrors& e : s.rows)
-    out << YAML::Flow << YAML::BeginMap << YAML::Key << "coefficients" << YAML::Value
-        << e.coefficients << YAML::Key << "median" << YAML::Value << e.median << YAML::Key << "p95"
-        << YAML::Value << e.p95 << YAML::EndMap;
-  out << YAML::EndSeq << YAML::EndMap;
+      << YAML::Value << s.pairs;
+  for (const auto& [name, rows] : {std::pair{"anywhere", &s.anywhere}, {"on_nodes", &s.on_nodes}}) {
+    out << YAML::Key << name << YAML::Value << YAML::BeginSeq;
+    for (const EmbeddingErrors& e : *rows)
+      out << YAML::Flow << YAML::BeginMap << YAML::Key << "coefficients" << YAML::Value
+          << e.coefficients << YAML::Key << "median" << YAML::Value << e.median << YAML::Key
+          << "p95" << YAML::Value << e.p95 << YAML::EndMap;
+    out << YAML::EndSeq;
+  }
+  out << YAML::EndMap;
 }
 
 // --- report.md -----------------------------------------------------------------------------------
@@ -155,8 +162,11 @@ void md_spacing(std::ostringstream& md, const std::string& title, const char* pa
   md << "## " << title << "\n\n"
      << s.fine.size() << " fine samples of " << parameter << " from " << num(s.fine.front(), 3)
      << " to " << num(s.fine.back(), 3)
-     << "; each row is 8 samples at equal steps of its cumulative curve. CV is the coefficient "
-        "of variation of the row's successive image-metric steps (0: perfectly uniform).\n\n"
+     << " (a grid, bisected wherever a segment held more than a quarter of a row's step); each "
+        "row is "
+     << s.image.values.size()
+     << " samples at equal steps of its cumulative curve. CV is the coefficient of variation of "
+        "the row's successive image-metric steps (0: perfectly uniform).\n\n"
      << "| spacing | " << parameter << " | CV |\n|---|---|---|\n";
   for (const SpacedRow* row : {&s.baseline, &s.image})
     md << "| " << row->spacing << " | " << list(row->values, 4) << " | " << num(row->cv, 3)
@@ -166,12 +176,16 @@ void md_spacing(std::ostringstream& md, const std::string& title, const char* pa
 }
 
 void md_embedding(std::ostringstream& md, const EmbeddingStudy& s, const std::string& db) {
-  md << "## Embedding\n\nDatabase `" << db << "`: " << s.pairs
-     << " random pairs of materials, relative error |embedded - exact| / exact of the "
-        "embedding truncated to k coefficients per channel.\n\n"
-     << "| k | median | p95 |\n|---|---|---|\n";
-  for (const EmbeddingErrors& e : s.rows)
-    md << "| " << e.coefficients << " | " << num(e.median, 4) << " | " << num(e.p95, 4) << " |\n";
+  md << "## Embedding\n\nDatabase `" << db << "`: relative error |embedded - exact| / exact of "
+     << "the embedding truncated to k coefficients per channel, over " << s.pairs
+     << " random pairs of materials anywhere in the grids (interpolation and truncation) and "
+     << s.pairs << " on grid nodes (truncation alone).\n\n"
+     << "| k | median, anywhere | p95, anywhere | median, on nodes | p95, on nodes |\n"
+     << "|---|---|---|---|---|\n";
+  for (std::size_t i = 0; i < s.anywhere.size(); ++i)
+    md << "| " << s.anywhere[i].coefficients << " | " << num(s.anywhere[i].median, 4) << " | "
+       << num(s.anywhere[i].p95, 4) << " | " << num(s.on_nodes[i].median, 4) << " | "
+       << num(s.on_nodes[i].p95, 4) << " |\n";
   md << "\n";
 }
 

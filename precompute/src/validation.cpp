@@ -75,16 +75,93 @@ std::vector<double> successive(const std::vector<Image>& images,
   return steps;
 }
 
-// A material of `e`'s model with parameters uniform in grid coordinates and random colours.
-Material random_material(const ModelEmbedding& e, std::mt19937& rng) {
+// The fine samples of a spacing study, their images and both curves' steps between them.
+struct FineSweep {
+  std::vector<double> x;
+  std::vector<Image> images;
+  std::vector<double> image_steps, base_steps;
+};
+
+void measure_steps(FineSweep& s, const MaterialFamily& family, Baseline baseline) {
+  s.image_steps = successive(s.images, image_distance);
+  s.base_steps.clear();
+  for (std::size_t i = 1; i < s.x.size(); ++i)
+    s.base_steps.push_back(baseline == Baseline::brdf_l2
+                               ? brdf_distance(family(s.x[i - 1]), family(s.x[i]))
+                               : s.x[i] - s.x[i - 1]);
+}
+
+// A segment whose step is a large part of a row's step (total / (count - 1)) would place a row
+// sample by linear interpolation across a change it does not resolve (Lafortune's cz near
+// 1/sqrt(3), Ward's BRDF-space metric near the mirror): such segments are bisected until every
+// step is at most a quarter of a row's step, up to kMaxFine samples.
+constexpr double kStepsPerRowStep = 4;
+constexpr std::size_t kMaxFine = 128;
+
+FineSweep measure_fine(Renderer& renderer, const MaterialFamily& family,
+                       const std::vector<double>& fine, Baseline baseline, int count) {
+  FineSweep s;
+  s.x = fine;
+  for (double x : fine) s.images.push_back(renderer.render(family(x)));
+  for (;;) {
+    measure_steps(s, family, baseline);
+    const double limit = kStepsPerRowStep * (count - 1);
+    const double image_max =
+        std::accumulate(s.image_steps.begin(), s.image_steps.end(), 0.0) / limit;
+    const double base_max = std::accumulate(s.base_steps.begin(), s.base_steps.end(), 0.0) / limit;
+    std::vector<std::size_t> split;
+    for (std::size_t i = 0; i + 1 < s.x.size() && s.x.size() + split.size() < kMaxFine; ++i)
+      if (s.image_steps[i] > image_max || s.base_steps[i] > base_max) split.push_back(i);
+    if (split.empty()) return s;
+    // From the back, so that the indices still to come stay valid.
+    for (auto i = split.rbegin(); i != split.rend(); ++i) {
+      const double mid = 0.5 * (s.x[*i] + s.x[*i + 1]);
+      s.x.insert(s.x.begin() + std::ptrdiff_t(*i + 1), mid);
+      s.images.insert(s.images.begin() + std::ptrdiff_t(*i + 1), renderer.render(family(mid)));
+    }
+  }
+}
+
+// A material of `e`'s model with random parameters and colours (see embedding_study).
+Material random_material(const ModelEmbedding& e, bool on_nodes, std::mt19937& rng) {
   const auto uniform = [&](double lo, double hi) {
     return lo + (hi - lo) * (double(rng()) + 0.5) / 4294967296.0;
   };
+  const auto pick = [&](const std::vector<double>& nodes) { return nodes[rng() % nodes.size()]; };
   Material m = default_material(e.model());
   for (std::size_t d = 0; d < e.grid().dimensions(); ++d)
-    m.params[d] = e.grid().value_at(d, uniform(0, double(e.grid().axis(d).size() - 1)));
-  for (int c = 0; c < 3; ++c) m.rho_d[c] = uniform(0, 0.5), m.rho_s[c] = uniform(0, 1);
+    m.params[d] = on_nodes ? pick(e.grid().axis(d))
+                           : e.grid().value_at(d, uniform(0, double(e.grid().axis(d).size() - 1)));
+  for (int c = 0; c < 3; ++c) {
+    if (on_nodes) {
+      const double sum = uniform(0, 1), q = pick(e.q_nodes());
+      m.rho_d[c] = q * sum, m.rho_s[c] = (1 - q) * sum;
+    } else {
+      m.rho_d[c] = uniform(0, 0.5), m.rho_s[c] = uniform(0, 1);
+    }
+  }
   return m;
+}
+
+// Median and p95 of the relative error at every k, over `pairs` random pairs.
+std::vector<EmbeddingErrors> embedding_errors(const std::vector<const ModelEmbedding*>& models,
+                                              Renderer& renderer, int pairs, bool on_nodes,
+                                              const std::vector<int>& ks, std::mt19937& rng) {
+  std::vector<std::vector<double>> errors(ks.size());
+  for (int p = 0; p < pairs; ++p) {
+    const ModelEmbedding& ea = *models[rng() % models.size()];
+    const ModelEmbedding& eb = *models[rng() % models.size()];
+    const Material a = random_material(ea, on_nodes, rng);
+    const Material b = random_material(eb, on_nodes, rng);
+    const double exact = image_distance(renderer.render(a), renderer.render(b));
+    const Eigen::VectorXf va = ea.embed(a), vb = eb.embed(b);
+    for (std::size_t i = 0; i < ks.size(); ++i)
+      errors[i].push_back(std::abs(truncated_distance(va, vb, ks[i]) - exact) / exact);
+  }
+  std::vector<EmbeddingErrors> rows;
+  for (std::size_t i = 0; i < ks.size(); ++i)
+    rows.push_back({ks[i], quantile(errors[i], 0.5), quantile(errors[i], 0.95)});
+  return rows;
 }
 
 }  // namespace
@@ -265,19 +342,10 @@ SceneStudy scene_study(const std::vector<NamedRenderer>& renderers) {
 
 SpacingStudy spacing_study(Renderer& renderer, const MaterialFamily& family,
                            const std::vector<double>& fine, Baseline baseline, int count) {
-  SpacingStudy study;
-  study.fine = fine;
-  std::vector<Material> samples;
-  for (double x : fine) samples.push_back(family(x));
-  study.cumulative_image = cumulative(successive(render_all(renderer, samples), image_distance));
-  std::vector<double> base_steps;
-  for (std::size_t i = 1; i < fine.size(); ++i)
-    base_steps.push_back(baseline == Baseline::brdf_l2 ? brdf_distance(samples[i - 1], samples[i])
-                                                       : fine[i] - fine[i - 1]);
-  study.cumulative_baseline = cumulative(base_steps);
-
+  const FineSweep sweep = measure_fine(renderer, family, fine, baseline, count);
+  SpacingStudy study{sweep.x, cumulative(sweep.image_steps), cumulative(sweep.base_steps), {}, {}};
   const auto row = [&](std::string name, const std::vector<double>& curve) {
-    SpacedRow r{std::move(name), equal_steps(fine, curve, count), {}, {}, 0};
+    SpacedRow r{std::move(name), equal_steps(sweep.x, curve, count), {}, {}, 0};
     std::vector<Material> materials;
     for (double x : r.values) materials.push_back(family(x));
     r.images = render_all(renderer, materials);
@@ -311,19 +379,9 @@ EmbeddingStudy embedding_study(const Database& db, Renderer& renderer, int pairs
   ks.push_back(full);
 
   std::mt19937 rng(seed);
-  std::vector<std::vector<double>> errors(ks.size());
-  for (int p = 0; p < pairs; ++p) {
-    const ModelEmbedding& ea = *models[rng() % models.size()];
-    const ModelEmbedding& eb = *models[rng() % models.size()];
-    const Material a = random_material(ea, rng), b = random_material(eb, rng);
-    const double exact = image_distance(renderer.render(a), renderer.render(b));
-    const Eigen::VectorXf va = ea.embed(a), vb = eb.embed(b);
-    for (std::size_t i = 0; i < ks.size(); ++i)
-      errors[i].push_back(std::abs(truncated_distance(va, vb, ks[i]) - exact) / exact);
-  }
-  EmbeddingStudy study{pairs, {}};
-  for (std::size_t i = 0; i < ks.size(); ++i)
-    study.rows.push_back({ks[i], quantile(errors[i], 0.5), quantile(errors[i], 0.95)});
+  EmbeddingStudy study{pairs, {}, {}};
+  study.anywhere = embedding_errors(models, renderer, pairs, false, ks, rng);
+  study.on_nodes = embedding_errors(models, renderer, pairs, true, ks, rng);
   return study;
 }
 

@@ -57,13 +57,16 @@ void check_fig2(const YAML::Node& f) {
 void check_fig3(const YAML::Node& f) {
   expect_sequence(f["alpha"], 25, "figure3.alpha");
   EXPECT_NEAR(f["reference_alpha"].as<double>(), 0.07, 0.0075);
+  EXPECT_EQ(f["alpha"][f["reference_sample"].as<std::size_t>()].as<double>(),
+            f["reference_alpha"].as<double>());
   EXPECT_EQ(f["tolerance"].as<double>(), 0.2);
   std::map<std::string, double> within;
   for (const char* m : {"interior", "forest", "courtyard", "uniform", "brdf_l2"}) {
     const YAML::Node e = f["metrics"][m];
     ASSERT_TRUE(e.IsMap()) << m;
     EXPECT_GT(e["scale"].as<double>(), 0) << m;
-    expect_sequence(e["from_reference"], 25, m);
+    expect_sequence(e["distances"], 25, m);
+    for (const YAML::Node& row : e["distances"]) expect_sequence(row, 25, m);
     within[m] = e["within"].as<double>();
   }
   EXPECT_EQ(within["interior"], 1.0);
@@ -92,12 +95,23 @@ void check_spacing(const YAML::Node& f, const char* parameter, const char* basel
 
 void check_embedding(const YAML::Node& f) {
   EXPECT_EQ(f["pairs"].as<int>(), 6);
-  ASSERT_TRUE(f["rows"].IsSequence());
-  ASSERT_GE(f["rows"].size(), 2u);
-  for (const YAML::Node& row : f["rows"]) {
-    EXPECT_GT(row["coefficients"].as<int>(), 0);
-    EXPECT_GE(row["p95"].as<double>(), row["median"].as<double>());
+  for (const char* kind : {"anywhere", "on_nodes"}) {
+    ASSERT_TRUE(f[kind].IsSequence()) << kind;
+    ASSERT_GE(f[kind].size(), 2u) << kind;
+    for (const YAML::Node& row : f[kind]) {
+      EXPECT_GT(row["coefficients"].as<int>(), 0) << kind;
+      EXPECT_GE(row["p95"].as<double>(), row["median"].as<double>()) << kind;
+    }
   }
+  // On the nodes only the truncation is left: a projection never lengthens a distance and each
+  // coefficient adds to it, so the error cannot grow with k (the database is this renderer's).
+  const YAML::Node nodes = f["on_nodes"];
+  for (std::size_t i = 1; i < nodes.size(); ++i)
+    for (const char* q : {"median", "p95"})
+      EXPECT_LE(nodes[i][q].as<double>(), nodes[i - 1][q].as<double>() + 1e-6) << q << i;
+  // The coarse test grids' interpolation costs more than truncating to the last k.
+  const std::size_t last = nodes.size() - 1;
+  EXPECT_LT(nodes[last]["median"].as<double>(), f["anywhere"][last]["median"].as<double>());
 }
 
 // Every plot the report lists is a readable PNG of the listed size; every figure has one.

@@ -129,14 +129,15 @@ struct SpacedRow {
 };
 
 struct SpacingStudy {
-  std::vector<double> fine;              // the parameter grid the curves are measured on
+  std::vector<double> fine;              // where the curves are measured (the grid, refined)
   std::vector<double> cumulative_image;  // along `fine`
   std::vector<double> cumulative_baseline;
   SpacedRow baseline, image;
 };
 
-// Measures both cumulative curves on `fine` (increasing), places `count` samples at equal steps
-// of each, renders the two rows and measures their image-metric steps.
+// Measures both cumulative curves on `fine` (increasing), bisecting its segments wherever one
+// holds more than a quarter of a row's step of either curve (up to 128 samples), places `count`
+// samples at equal steps of each curve, renders the two rows and measures their image steps.
 SpacingStudy spacing_study(Renderer& renderer, const MaterialFamily& family,
                            const std::vector<double>& fine, Baseline baseline, int count);
 
@@ -152,14 +153,17 @@ struct EmbeddingErrors {
 };
 
 struct EmbeddingStudy {
-  int pairs = 0;
-  std::vector<EmbeddingErrors> rows;  // k = 4, 8, 16, ... and the database's full count
+  int pairs = 0;  // of each kind
+  // k = 4, 8, 16, ... and the database's full count, for pairs of materials
+  std::vector<EmbeddingErrors> anywhere;  // anywhere in the grids: interpolation and truncation
+  std::vector<EmbeddingErrors> on_nodes;  // on grid nodes, q included: truncation alone
 };
 
-// `pairs` pairs of random materials of the database's models (parameters uniform in grid
-// coordinates, rho_d in [0, 0.5] and rho_s in [0, 1] per channel, from a fixed seed): the
-// relative error of the embedded distance against the exact image_distance of renderings by
-// `renderer`, which must match the database (its env, scene and resolution).
+// `pairs` pairs of random materials of the database's models (from a fixed seed) of each kind:
+//   anywhere: parameters uniform in grid coordinates, rho_d in [0, 0.5] and rho_s in [0, 1];
+//   on_nodes: parameters on grid nodes, rho_d + rho_s in [0, 1] split at a q node;
+// per channel. The relative error of the embedded distance against the exact image_distance of
+// renderings by `renderer`, which must match the database (its env, scene and resolution).
 EmbeddingStudy embedding_study(const Database& db, Renderer& renderer, int pairs,
                                std::uint32_t seed = 1);
 
