@@ -56,6 +56,42 @@ Rgb parse_colour(std::string_view text, std::string_view key) {
   return {parse_number(parts[0], key), parse_number(parts[1], key), parse_number(parts[2], key)};
 }
 
+// The code point that starts at s[i], advancing i past it; -1 where the bytes are not valid,
+// shortest-form UTF-8.
+long decode_utf8(std::string_view s, std::size_t& i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char lead = byte(i);
+  if (lead < 0x80) return s[i++];
+  const int length = (lead & 0xe0) == 0xc0   ? 2
+                     : (lead & 0xf0) == 0xe0 ? 3
+                     : (lead & 0xf8) == 0xf0 ? 4
+                                             : 0;
+  if (length == 0 || i + length > s.size()) return -1;
+  long cp = lead & (0x7f >> length);
+  for (int k = 1; k < length; ++k) {
+    if ((byte(i + k) & 0xc0) != 0x80) return -1;
+    cp = cp << 6 | (byte(i + k) & 0x3f);
+  }
+  i += length;
+  constexpr long kShortest[] = {0, 0, 0x80, 0x800, 0x10000};
+  return cp >= kShortest[length] && cp <= 0x10ffff && (cp < 0xd800 || cp > 0xdfff) ? cp : -1;
+}
+
+// A colour space name must read back from every format brdfnav writes it in: YAML, which holds
+// printable Unicode only, and the inline spec, which splits items at ',' and trims values.
+void check_colorspace(std::string_view name) {
+  if (name.empty()) throw MaterialError("colorspace: must not be empty");
+  if (trim(name) != name)
+    throw MaterialError("colorspace: must not start or end with a space or tab");
+  for (std::size_t i = 0; i < name.size();) {
+    const std::size_t at = i;
+    const long c = decode_utf8(name, i);
+    if (c < 0x20 || c == 0x7f || (c >= 0x80 && c < 0xa0) || c == 0xfffe || c == 0xffff || c == ',')
+      throw MaterialError("colorspace: byte " + std::to_string(at) +
+                          " is not allowed (a colour space name is printable UTF-8 without ',')");
+  }
+}
+
 }  // namespace
 
 Material default_material(ModelId id) {
@@ -80,7 +116,7 @@ void validate(const Material& m) {
   }
   check_rgb(m.rho_d, kRhoDMax, "rho_d");
   check_rgb(m.rho_s, kRhoSMax, "rho_s");
-  if (m.colorspace.empty()) throw MaterialError("colorspace: must not be empty");
+  check_colorspace(m.colorspace);
 }
 
 Closure make_closure(const Material& m) {

@@ -2,6 +2,7 @@
 
 #include <brdfnav/core/atomic_file.h>
 
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -219,6 +220,38 @@ void emit_rgb(YAML::Emitter& out, const char* key, const Rgb& rgb) {
   out << YAML::EndSeq;
 }
 
+// Throws a syntax error where yaml-cpp's parser would stop making progress. yaml-cpp 0.7 reads a
+// stray ',' at the top level as an empty document without consuming it, so YAML::LoadAll(",")
+// appends empty documents until memory runs out (found by tests/fuzz). A call that consumes
+// nothing starts its document where the previous one started; such a stall never ends.
+void check_parser_progress(const std::string& text, std::string_view source) {
+  struct DocumentStarts : YAML::EventHandler {
+    std::vector<YAML::Mark> marks;
+    void OnDocumentStart(const YAML::Mark& mark) override { marks.push_back(mark); }
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  const std::string&) override {}
+    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                         YAML::EmitterStyle::value) override {}
+    void OnSequenceEnd() override {}
+    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                    YAML::EmitterStyle::value) override {}
+    void OnMapEnd() override {}
+  } starts;
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  while (parser.HandleNextDocument(starts)) {
+    const std::vector<YAML::Mark>& m = starts.marks;
+    if (m.size() >= 2 && m.back().pos == m[m.size() - 2].pos) {
+      const auto at = static_cast<std::size_t>(m.back().pos);
+      const std::string what = at < text.size() ? "'" + text.substr(at, 1) + "'" : "end of input";
+      throw MaterialError(location(source, m.back()) + "syntax error: unexpected " + what);
+    }
+  }
+}
+
 std::string read_text(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
@@ -272,9 +305,11 @@ Material material_from_node(const YAML::Node& node, std::string_view source,
 }
 
 Material parse_material_yaml(std::string_view text, std::string_view source) {
+  const std::string copy(text);
   std::vector<YAML::Node> documents;
   try {
-    documents = YAML::LoadAll(std::string(text));
+    check_parser_progress(copy, source);
+    documents = YAML::LoadAll(copy);
   } catch (const YAML::Exception& e) {
     throw MaterialError(location(source, e.mark) + "syntax error: " + e.msg);
   }

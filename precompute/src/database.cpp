@@ -3,6 +3,8 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+
 namespace brdfnav {
 
 namespace fs = std::filesystem;
@@ -13,11 +15,18 @@ std::string attribute(const OIIO::ImageSpec& spec, const char* name) {
   return spec.get_string_attribute(name);
 }
 
-// Every listed file exists with its checksum, and every file the grids imply is listed.
+// The manifest lists exactly the files the grids imply, and each exists with its checksum. Only
+// those: a listed name such as /dev/zero or ../../x would send the checksum outside the database
+// (or read forever).
 void check_files(const fs::path& dir, const Manifest& m) {
   const std::string manifest = (dir / db::kManifestFile).string();
-  for (const std::string& f : db::database_files(m.grids))
+  const std::vector<std::string> expected = db::database_files(m.grids);
+  for (const std::string& f : expected)
     if (!m.files.contains(f)) throw DatabaseError(manifest + ": does not list the file " + f);
+  for (const auto& [name, sha] : m.files)
+    if (!std::binary_search(expected.begin(), expected.end(), name))
+      throw DatabaseError(manifest + ": lists the file " + name +
+                          ", which is not part of a database of its grids");
   for (const auto& [name, sha] : m.files) {
     const fs::path path = dir / name;
     if (!fs::exists(path)) throw DatabaseError(path.string() + ": missing");

@@ -5,6 +5,7 @@
 #include <OpenImageIO/hash.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdio>
 #include <cstring>
@@ -50,7 +51,8 @@ void emit_settings(YAML::Emitter& out, const Profile& p, const EnvMap& env, cons
   out << YAML::Key << "hot_texels_per_width" << YAML::Value << q.hot_texels_per_width;
   out << YAML::Key << "max_node" << YAML::Value << q.max_node;
   out << YAML::Key << "reach" << YAML::Value << q.reach;
-  out << YAML::Key << "max_split" << YAML::Value << q.max_split << YAML::EndMap;
+  out << YAML::Key << "max_split" << YAML::Value << q.max_split;
+  out << YAML::Key << "max_nodes" << YAML::Value << q.max_nodes << YAML::EndMap;
   out << YAML::Key << "pca" << YAML::Value << YAML::Flow << YAML::BeginMap;
   out << YAML::Key << "components" << YAML::Value << p.pca.components;
   out << YAML::Key << "oversample" << YAML::Value << p.pca.oversample;
@@ -80,17 +82,30 @@ YAML::Node require(const YAML::Node& map, const std::string& key, const std::str
 
 namespace {
 
-std::vector<ProfileGrid> parse_grids(const YAML::Node& models, const std::string& file) {
+// The models' grids. Every node has an image the manifest lists, so a grid with more nodes than
+// `listed` files is refused before anything sized by it is made (a few hundred numbers in a
+// corrupt manifest would otherwise name billions of files).
+std::vector<ProfileGrid> parse_grids(const YAML::Node& models, std::size_t listed,
+                                     const std::string& file) {
   std::vector<ProfileGrid> grids;
   for (const ModelInfo& info : brdfnav::models()) {
     const YAML::Node m = models[std::string(info.name)];
     if (!m) continue;
     std::vector<std::vector<double>> axes;
+    std::size_t nodes = 1;
     for (const ParamSpec& spec : info.params) {
-      axes.push_back(require(m, std::string(spec.name), file).as<std::vector<double>>());
-      if (axes.back().size() < 2)
-        throw DatabaseError(file + ": models." + std::string(info.name) + "." +
-                            std::string(spec.name) + " needs at least two nodes");
+      const std::string key = "models." + std::string(info.name) + "." + std::string(spec.name);
+      const auto axis = require(m, std::string(spec.name), file).as<std::vector<double>>();
+      if (axis.size() < 2) throw DatabaseError(file + ": " + key + " needs at least two nodes");
+      for (std::size_t i = 0; i < axis.size(); ++i)
+        if (!in_valid_range(spec, axis[i]) || (i > 0 && !(axis[i] > axis[i - 1])))
+          throw DatabaseError(file + ": " + key +
+                              " must increase strictly within the parameter's valid range");
+      nodes *= axis.size();
+      if (nodes > listed)
+        throw DatabaseError(file + ": models." + std::string(info.name) +
+                            " has more nodes than the manifest lists files");
+      axes.push_back(axis);
     }
     grids.push_back({info.id, ParamGrid(info.params, std::move(axes))});
   }
@@ -195,9 +210,15 @@ Manifest read_manifest(const std::filesystem::path& path) {
     m.env_path = require(env, "path", file).as<std::string>();
     m.env_hash = require(env, "pixel_sha1", file).as<std::string>();
     m.components = require(root, "components", file).as<int>();
+    if (m.components < 1) throw DatabaseError(file + ": components must be positive");
     m.q_nodes = require(root, "q_nodes", file).as<std::vector<double>>();
-    m.grids = parse_grids(require(root, "models", file), file);
+    // The embedding interpolates between q nodes: at least two, increasing from 0 to 1.
+    const auto not_increasing = [](double a, double b) { return !(b > a); };
+    if (m.q_nodes.size() < 2 || m.q_nodes.front() != 0 || m.q_nodes.back() != 1 ||
+        std::adjacent_find(m.q_nodes.begin(), m.q_nodes.end(), not_increasing) != m.q_nodes.end())
+      throw DatabaseError(file + ": q_nodes must increase strictly from 0 to 1");
     m.files = require(root, "files", file).as<std::map<std::string, std::string>>();
+    m.grids = parse_grids(require(root, "models", file), m.files.size(), file);
     return m;
   } catch (const YAML::Exception& e) {
     throw DatabaseError(file + ": line " + std::to_string(e.mark.line + 1) + ": " + e.msg);

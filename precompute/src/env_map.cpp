@@ -40,6 +40,11 @@ RawMap read_rgb(const std::filesystem::path& path) {
     throw EnvMapError(name + ": has " + std::to_string(spec.nchannels) +
                       " channel(s); an environment map needs at least 3 (R, G, B)");
   check_shape(name, spec.width, spec.height);
+  if (spec.width > kMaxEnvWidth)
+    throw EnvMapError(name + ": is " + std::to_string(spec.width) + "x" +
+                      std::to_string(spec.height) + "; brdfnav reads environment maps up to " +
+                      std::to_string(kMaxEnvWidth) + "x" + std::to_string(kMaxEnvWidth / 2) +
+                      " (downsample it, e.g. oiiotool IN --resize 4096x2048 -o OUT)");
   RawMap map{spec.width, spec.height, {}};
   map.rgb.resize(static_cast<std::size_t>(spec.width) * spec.height * 3);
   if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, map.rgb.data()))

@@ -23,6 +23,10 @@ namespace brdfnav {
 inline constexpr const char* kDefaultEnvPath =
     "/usr/share/blender/datafiles/studiolights/world/interior.exr";
 
+// The widest map load() reads: 16384 x 8192 is 1.5 GiB of float RGB, allocated before the pixels
+// are read, so a corrupt header that claims more is refused instead of exhausting memory.
+inline constexpr int kMaxEnvWidth = 16384;
+
 // A map that cannot be used: the message names the file and what is wrong.
 class EnvMapError : public std::runtime_error {
  public:
@@ -42,8 +46,9 @@ struct EnvLoadOptions {
 class EnvMap {
  public:
   // Reads the first three channels of subimage 0 as linear RGB. Throws EnvMapError when the file
-  // is missing or unreadable, has fewer than 3 channels, is not exactly 2:1, or (without
-  // `sanitize`) holds NaN/Inf texels. Negative components are clamped to 0 with one warning.
+  // is missing or unreadable, has fewer than 3 channels, is not exactly 2:1, is wider than
+  // kMaxEnvWidth, or (without `sanitize`) holds NaN/Inf texels. Negative components are clamped
+  // to 0 with one warning.
   static EnvMap load(const std::filesystem::path& path, const EnvLoadOptions& options = {},
                      const WarningSink& warn = warn_to_stderr);
 

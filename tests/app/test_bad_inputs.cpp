@@ -1,0 +1,291 @@
+// Bad input through the real CLI (issue #8): every case exits with an error code (1 to 127: an
+// error, never a signal), prints a message that names what is wrong and where (the file, key or
+// option), prints nothing on stdout and leaves no output file. What other suites already check
+// through the CLI is not repeated: a missing --env file, a corrupt table (checksum mismatch), bad
+// inline specs and non-finite directions (test_cli_eval, test_cli_precompute, test_cli_render).
+// The suite builds one test-profile database and damages copies of it (it is registered WHOLE).
+#include "app/cli_runner.h"
+
+#include <brdfnav/precompute/database.h>
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <unistd.h>
+
+#include <limits>
+#include <vector>
+
+namespace brdfnav::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+void expect_rejected(const CliResult& r, const std::vector<std::string>& phrases) {
+  EXPECT_GE(r.exit_code, 1);
+  EXPECT_LT(r.exit_code, 128) << "killed by signal " << r.exit_code - 128;
+  for (const std::string& p : phrases)
+    EXPECT_NE(r.err.find(p), std::string::npos) << "no '" << p << "' in: " << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+void write_bytes(const fs::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+void replace_in_file(const fs::path& path, const std::string& from, const std::string& to) {
+  std::string text = read_text(path);
+  const std::size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " not in " << path;
+  write_bytes(path, text.replace(at, from.size(), to));
+}
+
+class BadInputs : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = fs::temp_directory_path() / ("brdfnav_bad_inputs_" + std::to_string(::getpid()));
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+    const CliResult r = run_cli("precompute --profile test --res 8 --out " + db().string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  static void TearDownTestSuite() { fs::remove_all(root_); }
+
+  static fs::path file(const std::string& name) { return root_ / name; }
+  static fs::path db() { return file("db"); }
+  // A fresh copy of the database, to damage.
+  static fs::path copy_of_db(const std::string& name) {
+    const fs::path copy = file(name);
+    fs::copy(db(), copy, fs::copy_options::recursive);
+    return copy;
+  }
+  // An empty directory for the output of one case; it must stay empty.
+  static fs::path out_dir(const std::string& name) {
+    const fs::path dir = file("out_" + name);
+    fs::create_directories(dir);
+    return dir;
+  }
+  static void expect_empty(const fs::path& dir) {
+    for (const auto& e : fs::directory_iterator(dir)) ADD_FAILURE() << "left behind: " << e.path();
+  }
+
+  // A w x h float map of `channels` channels, every value `fill` except texel (1, 1) = `special`.
+  static fs::path write_map(const std::string& name, int w, int h, int channels, float fill,
+                            float special) {
+    const fs::path path = file(name);
+    std::vector<float> pixels(static_cast<std::size_t>(w) * h * channels, fill);
+    for (int c = 0; c < channels; ++c) pixels[(std::size_t(w) + 1) * channels + c] = special;
+    auto out = OIIO::ImageOutput::create(path.string());
+    EXPECT_TRUE(out && out->open(path.string(), OIIO::ImageSpec(w, h, channels, "float")));
+    EXPECT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+    out->close();
+    return path;
+  }
+  // `brdfnav render` of a small image under `env` into a fresh directory.
+  static CliResult render_under(const fs::path& env, const fs::path& out) {
+    return run_cli("render --material ward --res 8 --env " + env.string() + " --out " +
+                   (out / "ward.exr").string());
+  }
+
+  static inline fs::path root_;
+};
+
+TEST_F(BadInputs, EnvironmentMapsThatCannotBeUsed) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  const fs::path truncated = write_map("truncated.exr", 64, 32, 3, 1.f, 1.f);
+  fs::resize_file(truncated, fs::file_size(truncated) / 2);
+  const fs::path garbage = file("garbage.exr");
+  write_bytes(garbage, std::string("\x76\x2f\x31\x01 not an image\0\xff", 20));
+  // A Radiance header that claims 80000 x 40000 texels, in 60 bytes.
+  const fs::path huge = file("huge.hdr");
+  write_bytes(huge, "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 40000 +X 80000\n\x02\x02");
+  const struct {
+    fs::path env;
+    std::vector<std::string> phrases;
+  } cases[] = {
+      {write_map("nan.exr", 16, 8, 3, 1.f, nan),
+       {"1 texel(s) are NaN or infinite", "--sanitize-env"}},
+      {write_map("inf.exr", 16, 8, 3, 1.f, inf), {"NaN or infinite"}},
+      {write_map("square.exr", 8, 8, 3, 1.f, 1.f), {"is 8x8", "exactly 2:1"}},
+      {write_map("two_channels.exr", 16, 8, 2, 1.f, 1.f), {"has 2 channel(s)"}},
+      {truncated, {"cannot read"}},
+      {garbage, {"cannot read"}},
+      {huge, {"is 80000x40000", "up to 16384x8192"}},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.env.filename().string());
+    const fs::path out = out_dir(c.env.filename().string());
+    std::vector<std::string> phrases = c.phrases;
+    phrases.push_back(c.env.string() + ": ");
+    expect_rejected(render_under(c.env, out), phrases);
+    expect_empty(out);
+  }
+}
+
+// Not errors, by design (env_map.h): negative texels are clamped, and --sanitize-env zeroes
+// NaN/Inf ones; each says so once, naming the file.
+TEST_F(BadInputs, NegativeOrSanitizedTexelsRenderWithOneWarning) {
+  const fs::path negative = write_map("negative.exr", 16, 8, 3, -0.5f, 2.f);
+  CliResult r = render_under(negative, out_dir("negative"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: " + negative.string() + ": clamped 127 texel(s)"),
+            std::string::npos)
+      << r.err;
+  const fs::path nan =
+      write_map("nan_sanitized.exr", 16, 8, 3, 1.f, std::numeric_limits<float>::quiet_NaN());
+  r = run_cli("render --material ward --res 8 --sanitize-env --env " + nan.string() + " --out " +
+              (out_dir("sanitized") / "ward.exr").string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find(nan.string() + ": 1 texel(s) are NaN or infinite; set to 0"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST_F(BadInputs, DamagedDatabases) {
+  const std::string manifest = "manifest.yaml";
+  struct Case {
+    std::string name;
+    std::vector<std::string> phrases;
+  };
+  std::vector<Case> cases;
+  const auto damaged = [&](const std::string& name, std::vector<std::string> phrases) {
+    cases.push_back({name, std::move(phrases)});
+    return copy_of_db(name);
+  };
+
+  fs::path d = damaged("version", {"manifest.yaml: database format version 2", "reads version 1"});
+  replace_in_file(d / manifest, "brdfnav_database: 1", "brdfnav_database: 2");
+
+  d = damaged("missing_file", {"images/ward/00001.exr: missing"});
+  fs::remove(d / "images/ward/00001.exr");
+
+  d = damaged("missing_key", {"manifest.yaml: missing key 'components'"});
+  replace_in_file(d / manifest, "components: 24\n", "");
+
+  d = damaged("not_yaml", {"manifest.yaml: line 1"});
+  write_bytes(d / manifest, "{[: ::\n");
+
+  // A table cut short whose checksum someone "repaired" in the manifest.
+  d = damaged("truncated_table", {"embedding/ward.f32: table size does not match its header"});
+  const std::string sha = file_sha1(d / "embedding/ward.f32");
+  fs::resize_file(d / "embedding/ward.f32", fs::file_size(d / "embedding/ward.f32") - 4);
+  replace_in_file(d / manifest, sha, file_sha1(d / "embedding/ward.f32"));
+
+  // Files of another database: an image, then the whole manifest. The second database differs
+  // only in its resolution, so that both take the same time to build as the first.
+  const fs::path other = file("other_db");
+  ASSERT_EQ(run_cli("precompute --profile test --res 9 --out " + other.string()).exit_code, 0);
+  d = damaged("swapped_image", {"images/ward/00003.exr: checksum mismatch"});
+  fs::copy_file(other / "images/ward/00003.exr", d / "images/ward/00003.exr",
+                fs::copy_options::overwrite_existing);
+  d = damaged("swapped_repaired", {"images/ward/00003.exr: image is 9x9, the manifest says 8"});
+  fs::copy_file(other / "images/ward/00003.exr", d / "images/ward/00003.exr",
+                fs::copy_options::overwrite_existing);
+  replace_in_file(d / manifest, file_sha1(db() / "images/ward/00003.exr"),
+                  file_sha1(d / "images/ward/00003.exr"));
+  d = damaged("swapped_manifest", {"checksum mismatch"});
+  fs::copy_file(other / manifest, d / manifest, fs::copy_options::overwrite_existing);
+
+  // Found by tests/fuzz: a manifest naming a file outside the database (reading /dev/zero never
+  // ended), and grids far larger than the files listed (billions of names).
+  d = damaged("lists_dev_zero", {"manifest.yaml: lists the file /dev/zero"});
+  replace_in_file(d / manifest, "files:\n", "files:\n  /dev/zero: " + sha + "\n");
+  d = damaged("huge_grid", {"manifest.yaml: models.he has more nodes than the manifest lists"});
+  std::string axis = "[1.2";
+  for (int i = 1; i < 300; ++i) axis += ", " + std::to_string(1.2 + i * 0.01);
+  replace_in_file(d / manifest, "eta: [1.5, 4]", "eta: " + axis + "]");
+  replace_in_file(d / manifest, "tau: [2, 128]", "tau: [2, 3, 4, 5, 6, 7, 8, 9, 10, 128]");
+
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    std::vector<std::string> phrases = c.phrases;
+    phrases.push_back(file(c.name).string() + "/");  // the message names a file of the database
+    expect_rejected(run_cli("db-info " + file(c.name).string()), phrases);
+  }
+  // Commands that write a file write nothing from a damaged database.
+  const fs::path out = out_dir("export");
+  expect_rejected(run_cli("export --db " + file("version").string() + " --material ward --out " +
+                          (out / "ward.yaml").string()),
+                  {"format version 2"});
+  expect_empty(out);
+}
+
+TEST_F(BadInputs, MaterialFiles) {
+  const std::string valid =
+      "brdfnav_material: 1\nmodel: ward\nparams: {alpha_x: 0.1, alpha_y: 0.05}\n"
+      "rho_d: [0.2, 0.2, 0.2]\nrho_s: [0.04, 0.04, 0.04]\ncolorspace: lin_rec709\n";
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string text = valid;
+    return text.replace(text.find(from), from.size(), to);
+  };
+  const struct {
+    std::string name, text, phrase;
+  } cases[] = {
+      {"unknown_key", valid + "gloss: 0.5\n", ":7: gloss: unknown key"},
+      {"wrong_type", with("alpha_x: 0.1", "alpha_x: rough"),
+       ":3: params.alpha_x: expected a number"},
+      {"list_for_params", with("{alpha_x: 0.1, alpha_y: 0.05}", "[0.1, 0.05]"),
+       ":3: params: expected a mapping"},
+      {"out_of_range", with("alpha_y: 0.05", "alpha_y: 7"), ":3: params.alpha_y: 7 is outside"},
+      {"nan", with("alpha_y: 0.05", "alpha_y: .nan"), ":3: params.alpha_y: must be finite"},
+      {"huge", with("alpha_x: 0.1", "alpha_x: 1e300"),
+       ":3: params.alpha_x: 1.0000000000000001e+300 is outside"},
+      {"beyond_double", with("alpha_x: 0.1", "alpha_x: 1e999"),
+       ":3: params.alpha_x: expected a number, got '1e999'"},
+      {"huge_colour", with("[0.04, 0.04, 0.04]", "[0.04, 1e12, 0.04]"),
+       ":5: rho_s: component 1 = 1000000000000 is outside [0, 10]"},
+      {"schema_2", with("brdfnav_material: 1", "brdfnav_material: 2"),
+       ":1: brdfnav_material: unsupported schema version 2"},
+      // Found by tests/fuzz: yaml-cpp's LoadAll looped on a stray ',' until memory ran out.
+      {"stray_comma", ",", ":1: syntax error: unexpected ','"},
+      // Found by tests/fuzz: YAML cannot hold this name, so a written material did not read back.
+      {"colorspace_bytes", with("lin_rec709", "\"lin\\x01\""),
+       ":6: colorspace: byte 3 is not allowed"},
+      {"empty", "", ":1: material: the file is empty"},
+      {"binary",
+       std::string("\x7f"
+                   "ELF\x02\x01\x01\0\0\xff\xfe",
+                   11),
+       ":1: syntax error"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    const fs::path path = file(c.name + ".yaml");
+    write_bytes(path, c.text);
+    expect_rejected(run_cli("eval --material " + path.string() + " --wi 0,0,1 --wo 0,0,1"),
+                    {path.string() + c.phrase});
+  }
+  expect_rejected(run_cli("eval --material " + root_.string() + " --wi 0,0,1 --wo 0,0,1"),
+                  {root_.string() + ": is a directory"});
+}
+
+TEST_F(BadInputs, InlineSpecsAndDirections) {
+  const struct {
+    std::string args, phrase;
+  } cases[] = {
+      {"--material ward:alpha_x --wi 0,0,1 --wo 0,0,1", "'alpha_x': expected key=value"},
+      {"--material ward:alpha_x=nan --wi 0,0,1 --wo 0,0,1", "key 'alpha_x': value must be finite"},
+      {"--material ward:alpha_x=1e999 --wi 0,0,1 --wo 0,0,1",
+       "key 'alpha_x': '1e999' is not a number"},
+      {"--material he:tau=1e300 --wi 0,0,1 --wo 0,0,1",
+       "params.tau: 1.0000000000000001e+300 is outside"},
+      {"--material ward:alpha_x=0.1,alpha_x=0.2 --wi 0,0,1 --wo 0,0,1",
+       "key 'alpha_x' is given twice"},
+      {"--material lafortune:rho_s=0.1/0.2/x --wi 0,0,1 --wo 0,0,1",
+       "key 'rho_s': 'x' is not a number"},
+      {"--material ward:colorspace= --wi 0,0,1 --wo 0,0,1", "colorspace: must not be empty"},
+      {"--material \"$(printf 'ward:colorspace=a\\377')\" --wi 0,0,1 --wo 0,0,1",
+       "colorspace: byte 1"},
+      {"--material ward --wi 0,0,0 --wo 0,0,1", "--wi: direction has zero length"},
+      {"--material ward --wi 0,0,1 --wo 0,0,0", "--wo: direction has zero length"},
+      {"--material ward --wi 0,0,1 --wo 1e-300,0,0", "--wo: direction has zero length"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.args);
+    expect_rejected(run_cli("eval " + c.args), {c.phrase});
+  }
+}
+
+}  // namespace
+}  // namespace brdfnav::test

@@ -1,0 +1,38 @@
+// The database the database targets damage: tests/fuzz/database, made by
+// `brdfnav precompute --profile test --res 8` (regenerate it the same way when the format
+// version changes; corpus_replay.cpp checks that it still opens). Each process works on a copy.
+#pragma once
+
+#include "fuzz_target.h"
+
+#include <brdfnav/precompute/database.h>
+
+#include <sstream>
+
+namespace brdfnav::fuzz {
+
+inline std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+// A copy of the fixture in the scratch directory, made on the first call.
+inline const std::filesystem::path& database_copy() {
+  static const std::filesystem::path dir = [] {
+    const std::filesystem::path copy = scratch_dir() / "db";
+    std::filesystem::copy(BRDFNAV_FUZZ_DATABASE, copy, std::filesystem::copy_options::recursive);
+    return copy;
+  }();
+  return dir;
+}
+
+// The fixture's manifest, as made.
+inline const std::string& fixture_manifest() {
+  static const std::string text =
+      read_file(std::filesystem::path(BRDFNAV_FUZZ_DATABASE) / "manifest.yaml");
+  return text;
+}
+
+}  // namespace brdfnav::fuzz
