@@ -54,7 +54,8 @@ class Quadrature {
     reach_ = quality.reach;
     // Broad kernels too: the horizon cuts every lobe, and the second differences only correct
     // what is smooth at the scale of a node.
-    const double step = std::min(shape.minor_width / quality.texels_per_width, quality.max_node);
+    const double step = coarsened_step(
+        std::min(shape.minor_width / quality.texels_per_width, quality.max_node), quality);
     level_ = 0;
     while (level_ + 1 < env.level_count() && env.node_angle(level_ + 1) <= step) ++level_;
     auto pieces_for = [&](double piece) {
@@ -75,6 +76,23 @@ class Quadrature {
   }
 
  private:
+  // `step`, or the larger step that keeps the nodes the window enumerates within max_nodes: very
+  // anisotropic lobes (Ward 0.5 x 0.005) would otherwise enumerate a hemisphere at the step of
+  // their narrow side. Such a lobe is then integrated a little blurred across, in bounded time.
+  double coarsened_step(double step, const RenderQuality& quality) const {
+    const double a = reach_ * major_width_, b = reach_ * minor_width_;
+    const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
+    const bool ellipse = a <= 1.0 && theta_p - 1.2 * a > 0 && theta_p + 1.2 * a < kPi;
+    const double widest = horizon_.squaredNorm() > 0 ? kPi / 2 : kPi;
+    auto area = [&](double h) {  // what window_sum() enumerates, margins included
+      return ellipse ? kPi * (a + 3 * h) * (b + 3 * h)
+                     : 2 * kPi * (1 - std::cos(std::min(a + 3 * h, widest)));
+    };
+    for (int i = 0; i < 4 && area(step) > quality.max_nodes * step * step; ++i)
+      step = std::sqrt(area(step) / quality.max_nodes);
+    return step;
+  }
+
   // Whether a direction within `margin` radians of `w` can be inside the window.
   bool in_window(const Vec3& w, double margin, double reach) const {
     const Vec3 offset = w - peak_;

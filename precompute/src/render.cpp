@@ -20,6 +20,7 @@ RenderQuality RenderQuality::finer(double factor) const {
   q.max_node /= factor;
   q.reach *= 1 + 0.25 * std::log2(std::max(factor, 1.0));
   q.max_split = static_cast<int>(std::ceil(max_split * factor));
+  q.max_nodes = static_cast<int>(std::ceil(max_nodes * factor * factor));
   return q;
 }
 
@@ -105,7 +106,7 @@ struct Renderer::Impl {
     if (res < 1) throw std::invalid_argument("resolution must be at least 1");
     const RenderQuality& q = options.quality;
     if (!(q.texels_per_width > 0) || !(q.hot_texels_per_width > 0) || !(q.max_node > 0) ||
-        !(q.reach > 0) || q.max_split < 1)
+        !(q.reach > 0) || q.max_split < 1 || q.max_nodes < 1)
       throw std::invalid_argument("render quality: every knob must be positive");
     surface = scene.trace_camera(res);
     mirror_width = mirror_widths(surface, kPi / env.height());
@@ -220,8 +221,10 @@ ImageMetadata render_metadata(const Renderer& renderer, const Material* material
   const RenderQuality& q = renderer.options().quality;
   char quality[160];
   std::snprintf(quality, sizeof quality,
-                "texels_per_width=%g hot_texels_per_width=%g max_node=%g reach=%g max_split=%d",
-                q.texels_per_width, q.hot_texels_per_width, q.max_node, q.reach, q.max_split);
+                "texels_per_width=%g hot_texels_per_width=%g max_node=%g reach=%g max_split=%d "
+                "max_nodes=%d",
+                q.texels_per_width, q.hot_texels_per_width, q.max_node, q.reach, q.max_split,
+                q.max_nodes);
   ImageMetadata m{{"brdfnav:env", renderer.env().source()},
                   {"brdfnav:env_sha1", renderer.env().pixel_hash()},
                   {"brdfnav:scene", renderer.scene().description()},

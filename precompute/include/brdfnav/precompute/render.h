@@ -28,6 +28,7 @@ struct RenderQuality {
   double max_node = 0.15;             // radians: the largest node, whatever the lobe's width
   double reach = 4;                   // the window around the lobe's peak, in lobe widths
   int max_split = 16;                 // a texel is cut into at most max_split^2 pieces
+  int max_nodes = 16384;              // per pixel and term: beyond, nodes are made coarser
 
   // The same quadrature `factor` times finer in angle, over a wider window.
   RenderQuality finer(double factor) const;
