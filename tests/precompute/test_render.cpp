@@ -37,10 +37,12 @@ TEST(Render, WhiteFurnaceLambertianSphereIsRhoD) {
   const Scene sphere = Scene::sphere();
   Renderer renderer(env, sphere, 24);
   const Image& d = renderer.diffuse();
-  for (int y = 0; y < d.height; ++y)
-    for (int x = 0; x < d.width; ++x)
-      if (d.covered(x, y))
-        for (int c = 0; c < 3; ++c) ASSERT_NEAR(d.pixel(x, y)[c], 1.0, 0.01) << x << "," << y;
+  for (int y = 0; y < d.height; ++y) {
+    for (int x = 0; x < d.width; ++x) {
+      if (!d.covered(x, y)) continue;
+      for (int c = 0; c < 3; ++c) ASSERT_NEAR(d.pixel(x, y)[c], 1.0, 0.01) << x << "," << y;
+    }
+  }
   Material m = default_material(ModelId::ward);
   m.rho_d = Rgb(0.3, 0.5, 0.7), m.rho_s = Rgb::Zero();
   const Image img = renderer.render(m);
