@@ -100,6 +100,12 @@ void add_error_handling(httplib::Server& server) {
 }
 
 int bind(httplib::Server& server, const ServeOptions& o) {
+  // httplib's default adds SO_REUSEPORT, with which a second server shares the port silently
+  // and gets half the requests; SO_REUSEADDR alone still allows a restart at once.
+  server.set_socket_options([](socket_t sock) {
+    const int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   const int port = o.port == 0 ? server.bind_to_any_port(o.host)
                                : (server.bind_to_port(o.host, o.port) ? o.port : -1);
   if (port <= 0)

@@ -32,8 +32,14 @@ class RequestError : public std::runtime_error {
       : std::runtime_error(field + ": " + what) {}
 };
 
+// Invalid UTF-8, which an uploaded file may carry into a message or a name, becomes U+FFFD
+// rather than an exception.
+std::string json_text(const json& value) {
+  return value.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 ApiResponse json_response(const json& body) {
-  return {200, "application/json", body.dump()};
+  return {200, "application/json", json_text(body)};
 }
 
 std::string join(const std::vector<std::string>& names) {
@@ -223,7 +229,7 @@ ApiResponse answer(Body&& body) {
 }  // namespace
 
 ApiResponse error_response(int status, const std::string& message) {
-  return {status, "application/json", json{{"error", message}}.dump()};
+  return {status, "application/json", json_text({{"error", message}})};
 }
 
 NavigatorApi::NavigatorApi(const ApiOptions& options)

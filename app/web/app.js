@@ -44,14 +44,17 @@ async function call(path, body, options = {}) {
   return response;
 }
 
-// Thumbnail object URLs by (material, display, view), oldest first: going back, or to a
-// variation already on screen, shows its image at once.
+// Thumbnail object URLs by (material, display, view), least recently used first: going back, or
+// to a variation already on screen, shows its image at once.
 const thumbnails = new Map();
 
 function thumbnail(material) {
   const key = JSON.stringify([material, state.display, state.view]);
   let url = thumbnails.get(key);
-  if (!url) {
+  if (url) {
+    thumbnails.delete(key);  // now the most recently used
+    thumbnails.set(key, url);
+  } else {
     url = call('/api/thumbnail', { material, display: state.display, view: state.view })
       .then((r) => r.blob())
       .then((blob) => URL.createObjectURL(blob));

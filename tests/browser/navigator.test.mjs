@@ -358,12 +358,14 @@ test('bad API requests get 400 naming the field, and the server keeps serving', 
     ['/api/export', body({ material: { ...m, colorspace: '' } }), /^material:\d+: colorspace: /],
     ['/api/import?name=x.yaml', 'model: he\n', /^x\.yaml:1: brdfnav_material: missing/],
     ['/api/import', 'brdfnav_material: 1\nmodel: [', /^upload:\d+: syntax error/],
+    ['/api/import', Buffer.from('brdfnav_material: 1\nmodel: \xff\xfe\n', 'latin1'),
+      /^upload:2: model: unknown model '\ufffd\ufffd'/],
   ];
   for (const [pathname, payload, error] of cases) {
     const answer = await api(pathname, payload);
-    assert.equal(answer.status, 400, `${pathname} ${payload.slice(0, 80)}: ${answer.text}`);
+    assert.equal(answer.status, 400, `${pathname} ${String(payload).slice(0, 80)}: ${answer.text}`);
     assert.match(answer.type, /^application\/json/);
-    assert.match(JSON.parse(answer.text).error, error, payload.slice(0, 80));
+    assert.match(JSON.parse(answer.text).error, error, String(payload).slice(0, 80));
   }
   const missing = await api('/api/nope');
   assert.equal(missing.status, 404);
@@ -379,4 +381,14 @@ test('bad API requests get 400 naming the field, and the server keeps serving', 
   const png = await fetch(new URL('/api/thumbnail', url), { method: 'POST', body: body({ material: m }) });
   assert.equal(png.headers.get('content-type'), 'image/png');
   assert.equal(Buffer.from(await png.arrayBuffer()).subarray(1, 4).toString(), 'PNG');
+});
+
+test('serve refuses a port in use and a missing database, naming the option', async () => {
+  const { port } = new URL(url);
+  for (const [args, error] of [[['--db', path.join(tmp, 'db'), '--port', port], /--port: /],
+    [['--db', path.join(tmp, 'none'), '--port', '0'], /--db: /]]) {
+    // A serve that starts after all is killed after 20 s, and fails the check on its exit code.
+    await assert.rejects(run(cli, ['serve', ...args], { timeout: 20000 }),
+      (e) => e.code === 1 && error.test(e.stderr));
+  }
 });
