@@ -7,6 +7,7 @@
 #include <brdfnav/navigator.h>
 
 #include <array>
+#include <cstring>
 #include <memory>
 #include <new>
 #include <stdexcept>
@@ -196,8 +197,12 @@ static_assert(BRDFNAV_TAB_LOBE == int(Tab::lobe) && BRDFNAV_TAB_DIFFUSE == int(T
               BRDFNAV_TAB_SPECULAR == int(Tab::specular) &&
               BRDFNAV_TAB_MODELS == int(Tab::models) && BRDFNAV_TAB_GALLERY == int(Tab::gallery));
 
-Tab tab_of(brdfnav_tab tab) {
-  const int value = static_cast<int>(tab);
+// A C host may pass any int as a brdfnav_tab (a C enum is an int), but in C++ loading an enum
+// outside its range is undefined (UBSan, ./run check): the value is read from its bytes.
+Tab tab_of(const brdfnav_tab& tab) {
+  int value = 0;
+  static_assert(sizeof value == sizeof tab);
+  std::memcpy(&value, &tab, sizeof value);
   if (value < 0 || value >= static_cast<int>(std::size(kTabs)))
     throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT,
                    "tab " + std::to_string(value) + " is not a brdfnav_tab");

@@ -16,11 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 TEST(FuzzCorpus, EveryInputIsHandled) {
   std::vector<fs::path> inputs;
   for (const auto& e : fs::recursive_directory_iterator(BRDFNAV_FUZZ_CORPUS))
@@ -30,7 +25,7 @@ TEST(FuzzCorpus, EveryInputIsHandled) {
   for (const fs::path& input : inputs) {
     SCOPED_TRACE(input.string());
     std::fprintf(stderr, "replaying %s\n", input.c_str());  // names the input should it abort
-    const std::string bytes = read_bytes(input);
+    const std::string bytes = read_file(input);
     EXPECT_NO_THROW(
         LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()));
   }

@@ -24,8 +24,7 @@ const char* extension_of(std::string_view bytes) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace brdfnav;
-  static const bool one_reader = OIIO::attribute("try_all_readers", 0);
-  (void)one_reader;
+  [[maybe_unused]] static const bool one_reader = OIIO::attribute("try_all_readers", 0);
   const std::string_view bytes = fuzz::as_text(data, size);
   const std::filesystem::path path =
       fuzz::scratch_dir() / ("env" + std::string(extension_of(bytes)));

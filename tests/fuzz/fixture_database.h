@@ -7,16 +7,7 @@
 
 #include <brdfnav/precompute/database.h>
 
-#include <sstream>
-
 namespace brdfnav::fuzz {
-
-inline std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
 
 // A copy of the fixture in the scratch directory, made on the first call.
 inline const std::filesystem::path& database_copy() {

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <string_view>
 
@@ -31,6 +32,11 @@ inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {
 [[noreturn]] inline void fail(const std::string& what) {
   std::fprintf(stderr, "brdfnav fuzz: %s\n", what.c_str());
   std::abort();
+}
+
+inline std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
 }
 
 inline void write_file(const std::filesystem::path& path, std::string_view bytes) {
