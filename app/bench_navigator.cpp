@@ -23,6 +23,8 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+}  // namespace
+
 // Resident set size of this process in MiB (Linux /proc), or -1.
 double resident_mib() {
   std::ifstream status("/proc/self/status");
@@ -51,6 +53,8 @@ std::vector<Material> random_materials(const Database& db, int per_model) {
     }
   return out;
 }
+
+namespace {
 
 struct Percentiles {
   double median, p99, max;

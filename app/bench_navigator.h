@@ -1,7 +1,11 @@
 // `brdfnav bench navigator` (app/bench_navigator.cpp).
 #pragma once
 
+#include <brdfnav/core/material.h>
+#include <brdfnav/precompute/database.h>
+
 #include <string>
+#include <vector>
 
 namespace brdfnav::cli {
 
@@ -12,5 +16,11 @@ struct NavigatorBenchOptions {
   int thumbnail_size = 128;
 };
 void run_navigator_bench(const NavigatorBenchOptions& options);
+
+// What `brdfnav bench load` shares with it:
+// resident set size of this process in MiB (Linux /proc), or -1;
+double resident_mib();
+// random materials of every model of the database, parameters uniform in each axis's scale.
+std::vector<Material> random_materials(const Database& db, int per_model);
 
 }  // namespace brdfnav::cli

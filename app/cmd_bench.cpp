@@ -1,6 +1,7 @@
 // `brdfnav bench render`: the pre-renderer's speed and accuracy (issue #3) on this machine, as
 // the Markdown table bench/RESULTS.md records; `brdfnav bench navigator`: the neighbour service;
-// `brdfnav bench fits`: the conversion fits.
+// `brdfnav bench fits`: the conversion fits; `brdfnav bench load`: concurrent queries.
+#include "bench_load.h"
 #include "bench_navigator.h"
 #include "commands.h"
 
@@ -132,6 +133,18 @@ void add_bench_commands(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(8, 1024));
   nav->callback([n] { run_navigator_bench(*n); });
+
+  auto* load = bench->add_subcommand(
+      "load", "Threads querying one database: queries/s, answers vs serial, resident memory");
+  auto l = std::make_shared<LoadBenchOptions>();
+  load->add_option("--db", l->db, "Database directory")->required();
+  load->add_option("--threads", l->threads, "Querying threads")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+  load->add_option("--queries", l->queries, "Queries per thread")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000000));
+  load->callback([l] { run_load_bench(*l); });
 
   auto* fits = bench->add_subcommand("fits", "Time the model-to-model conversion fits (paper, 4)");
   auto per_model = std::make_shared<int>(8);
