@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace brdfnav {
 
@@ -61,20 +62,54 @@ double ParamGrid::value_at(std::size_t d, double coordinate) const {
   return from_scale(spec, lo + (c - static_cast<double>(i)) * (hi - lo));
 }
 
-std::vector<ParamGrid::Corner> ParamGrid::corners(std::span<const double> values) const {
+namespace {
+using AxisWeights = std::vector<std::pair<std::size_t, double>>;  // (node on the axis, weight)
+
+// Linear interpolation at grid coordinate c of an axis of n nodes.
+AxisWeights linear_weights(double c, std::size_t n) {
+  const std::size_t i = std::min(static_cast<std::size_t>(c), n - 2);
+  const double t = c - static_cast<double>(i);
+  return {{i, 1 - t}, {i + 1, t}};
+}
+
+// Catmull-Rom at grid coordinate c of an axis of n nodes: the cubic through nodes i - 1 .. i + 2
+// with central-difference slopes. Beyond the ends the missing node is the linear extrapolation
+// of the last two (2 p_0 - p_1), so a two-node axis interpolates linearly.
+AxisWeights cubic_weights(double c, std::size_t n) {
+  const std::size_t i = std::min(static_cast<std::size_t>(c), n - 2);
+  const double t = c - static_cast<double>(i), t2 = t * t, t3 = t2 * t;
+  double w[4] = {0.5 * (-t3 + 2 * t2 - t), 0.5 * (3 * t3 - 5 * t2 + 2),
+                 0.5 * (-3 * t3 + 4 * t2 + t), 0.5 * (t3 - t2)};
+  if (i == 0) w[1] += 2 * w[0], w[2] -= w[0], w[0] = 0;
+  if (i + 2 == n) w[2] += 2 * w[3], w[1] -= w[3], w[3] = 0;
+  AxisWeights out;
+  for (int k = 0; k < 4; ++k)
+    if (w[k] != 0) out.push_back({i + k - 1, w[k]});  // i + k - 1 >= 0 whenever w[k] != 0
+  return out;
+}
+}  // namespace
+
+template <typename AxisRule>
+std::vector<ParamGrid::Corner> ParamGrid::tensor_corners(std::span<const double> values,
+                                                         AxisRule rule) const {
   std::vector<Corner> out{{0, 1.0}};
   for (std::size_t d = 0; d < axes_.size(); ++d) {
-    const double c = grid_coordinate(d, values[d]);
-    const std::size_t i = std::min(static_cast<std::size_t>(c), axes_[d].size() - 2);
-    const double t = c - static_cast<double>(i);
     std::vector<Corner> next;
-    for (const Corner& k : out) {
-      if (t < 1) next.push_back({k.node + i * strides_[d], k.weight * (1 - t)});
-      if (t > 0) next.push_back({k.node + (i + 1) * strides_[d], k.weight * t});
+    for (const auto& [node, weight] : rule(grid_coordinate(d, values[d]), axes_[d].size())) {
+      if (weight == 0) continue;
+      for (const Corner& k : out) next.push_back({k.node + node * strides_[d], k.weight * weight});
     }
     out = std::move(next);
   }
   return out;
+}
+
+std::vector<ParamGrid::Corner> ParamGrid::corners(std::span<const double> values) const {
+  return tensor_corners(values, linear_weights);
+}
+
+std::vector<ParamGrid::Corner> ParamGrid::cubic_corners(std::span<const double> values) const {
+  return tensor_corners(values, cubic_weights);
 }
 
 }  // namespace brdfnav

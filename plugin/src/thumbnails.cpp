@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace brdfnav {
@@ -57,14 +58,15 @@ Image Thumbnails::render(const Material& m) const {
   const std::shared_ptr<const Image> diffuse = image({-1, 0});
   Image out(resolution_, resolution_);
   std::vector<double> root(out.rgba.size(), 0.0);
-  for (const ParamGrid::Corner& c : embedding->grid().corners(m.params)) {
+  for (const ParamGrid::Corner& c : embedding->grid().cubic_corners(m.params)) {
     const std::shared_ptr<const Image> spec = image({static_cast<int>(m.model), c.node});
     const Image corner = compose(*diffuse, *spec, m.rho_d, m.rho_s);
     for (std::size_t i = 0; i < root.size(); ++i)
       if (i % 4 != 3) root[i] += c.weight * std::cbrt(static_cast<double>(corner.rgba[i]));
   }
   for (std::size_t i = 0; i < root.size(); ++i)
-    out.rgba[i] = i % 4 == 3 ? diffuse->rgba[i] : static_cast<float>(root[i] * root[i] * root[i]);
+    out.rgba[i] =
+        i % 4 == 3 ? diffuse->rgba[i] : static_cast<float>(std::pow(std::max(root[i], 0.0), 3.0));
   return out;
 }
 

@@ -72,7 +72,7 @@ Eigen::VectorXf ModelEmbedding::channel(const std::vector<ParamGrid::Corner>& co
 }
 
 Eigen::VectorXf ModelEmbedding::embed(const Material& m) const {
-  const std::vector<ParamGrid::Corner> corners = grid_.corners(m.params);
+  const std::vector<ParamGrid::Corner> corners = grid_.cubic_corners(m.params);
   const Eigen::Index k = coefficients_.rows();
   Eigen::VectorXf out(3 * k);
   for (int c = 0; c < 3; ++c) {

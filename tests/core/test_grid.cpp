@@ -2,6 +2,7 @@
 #include <brdfnav/core/models.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numeric>
 
 namespace brdfnav {
@@ -53,6 +54,70 @@ TEST(ParamGrid, CornersInterpolateMultilinearly) {
   EXPECT_NEAR(sum,
               3 * grid.grid_coordinate(0, values[0]) - 2 * grid.grid_coordinate(1, values[1]) + 1,
               1e-9);
+}
+
+// Sum of weight * f(node) over corners.
+template <typename F>
+double interpolate(const std::vector<ParamGrid::Corner>& corners, F f) {
+  double sum = 0;
+  for (const auto& c : corners) sum += c.weight * f(c.node);
+  return sum;
+}
+
+TEST(ParamGrid, CubicCornersReproduceQuadraticsInsideAndLinesAtTheEnds) {
+  const ParamGrid grid(model_info(ModelId::ward).params);  // 15 x 15 nodes
+  const std::vector<double> at_node = grid.node_values(37);
+  const auto exact = grid.cubic_corners(at_node);
+  ASSERT_EQ(exact.size(), 1u);
+  EXPECT_EQ(exact[0].node, 37u);
+
+  const auto coordinate = [&](std::size_t node, std::size_t d) {
+    return double(grid.multi_index(node)[d]);
+  };
+  const auto quadratic = [&](std::size_t node) {
+    const double x = coordinate(node, 0), y = coordinate(node, 1);
+    return 0.5 * x * x - x * y + 2 * y * y - 3 * x + 1;
+  };
+  // Coordinates (4.37, 9.81): both cells have two nodes on either side.
+  const std::vector<double> inside{grid.value_at(0, 4.37), grid.value_at(1, 9.81)};
+  const auto corners = grid.cubic_corners(inside);
+  EXPECT_EQ(corners.size(), 16u);
+  EXPECT_NEAR(interpolate(corners, [](std::size_t) { return 1.0; }), 1.0, 1e-12);
+  const double x = 4.37, y = 9.81;
+  EXPECT_NEAR(interpolate(corners, quadratic), 0.5 * x * x - x * y + 2 * y * y - 3 * x + 1, 1e-9);
+
+  // In the first and last cells a linear function is still exact.
+  const auto linear = [&](std::size_t node) {
+    return 3.0 * coordinate(node, 0) - 2.0 * coordinate(node, 1) + 1.0;
+  };
+  const std::vector<double> ends{grid.value_at(0, 0.3), grid.value_at(1, 13.6)};
+  EXPECT_NEAR(interpolate(grid.cubic_corners(ends), linear), 3 * 0.3 - 2 * 13.6 + 1, 1e-9);
+}
+
+TEST(ParamGrid, CubicCornersAreSmoothAcrossNodes) {
+  const ParamGrid grid(model_info(ModelId::blinn_phong).params);
+  const auto f = [](std::size_t node) { return std::sin(0.7 * double(node)); };
+  const auto at = [&](double c) {
+    return interpolate(grid.cubic_corners(std::vector<double>{grid.value_at(0, c)}), f);
+  };
+  // One-sided slopes either side of node 5 agree (the multilinear ones jump there).
+  const double h = 1e-6;
+  const double left = (at(5.0) - at(5.0 - h)) / h, right = (at(5.0 + h) - at(5.0)) / h;
+  EXPECT_NEAR(left, right, 1e-4);
+  const auto linear_at = [&](double c) {
+    return interpolate(grid.corners(std::vector<double>{grid.value_at(0, c)}), f);
+  };
+  EXPECT_GT(std::abs((linear_at(5.0) - linear_at(5.0 - h)) / h -
+                     (linear_at(5.0 + h) - linear_at(5.0)) / h),
+            0.1);
+}
+
+TEST(ParamGrid, CubicCornersOfATwoNodeAxisAreLinear) {
+  const ParamGrid grid(model_info(ModelId::blinn_phong).params, {{2.0, 200.0}});
+  const auto corners = grid.cubic_corners(std::vector<double>{20.0});  // half-way on the log axis
+  ASSERT_EQ(corners.size(), 2u);
+  EXPECT_NEAR(corners[0].weight, 0.5, 1e-12);
+  EXPECT_NEAR(corners[1].weight, 0.5, 1e-12);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Thumbnails of any material, fast enough for the navigator (issue #5): the database's
-// pre-rendered images of the corners of the material's grid cell, each composed with the
-// material's rho_d and rho_s, blended with the multilinear weights in cube-root space and cubed
+// pre-rendered images of the nodes around the material on its grid, each composed with the
+// material's rho_d and rho_s, blended with the embedding's cubic weights in cube-root space
+// (negative values, which a spline may overshoot to in dark pixels, are clamped to 0) and cubed
 // back. At a grid node that is exactly the pre-rendered image of the material; between nodes it
 // is the image whose cube root the embedding interpolates, so what the thumbnail shows and the
 // distances the navigator measures agree.

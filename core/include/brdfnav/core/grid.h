@@ -1,5 +1,5 @@
 // A model's parameter grid (the cartesian product of its parameters' grid nodes) and multilinear
-// interpolation over it in each parameter's own scale (log or linear, as the table says).
+// or cubic interpolation over it in each parameter's own scale (log or linear, as the table says).
 #pragma once
 
 #include <brdfnav/core/params.h>
@@ -41,8 +41,16 @@ class ParamGrid {
   // The up to 2^d nodes and weights (summing to 1) that multilinearly interpolate at `values`;
   // corners with zero weight are left out.
   std::vector<Corner> corners(std::span<const double> values) const;
+  // The up to 4^d nodes and weights (summing to 1, some negative) of the tensor-product
+  // Catmull-Rom spline in grid coordinates: smooth across nodes, where multilinear interpolation
+  // kinks, and exact for functions quadratic in the coordinate away from the ends. What the
+  // embedding uses between its sparse nodes.
+  std::vector<Corner> cubic_corners(std::span<const double> values) const;
 
  private:
+  template <typename AxisRule>
+  std::vector<Corner> tensor_corners(std::span<const double> values, AxisRule rule) const;
+
   std::span<const ParamSpec> specs_;
   std::vector<std::vector<double>> axes_;
   std::vector<std::size_t> strides_;

@@ -38,8 +38,10 @@ class ModelEmbedding {
   const Eigen::MatrixXf& coefficients() const { return coefficients_; }
   int components() const { return static_cast<int>(coefficients_.rows()); }
 
-  // The 3k-vector of a material of this model (parameters off the grid are interpolated
-  // multilinearly in grid coordinates; outside the grid they are clamped to it).
+  // The 3k-vector of a material of this model (parameters off the grid are interpolated by
+  // the cubic spline of ParamGrid::cubic_corners in grid coordinates, which follows the images'
+  // change between sparse nodes far better than multilinear interpolation; outside the grid
+  // they are clamped to it).
   Eigen::VectorXf embed(const Material& m) const;
 
  private:
