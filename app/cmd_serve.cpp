@@ -39,20 +39,12 @@ const WebAsset* find_asset(const std::string& path) {
 }
 
 void add_routes(httplib::Server& server, const NavigatorApi& api) {
-  server.Get("/api/info",
-             [&api](const httplib::Request&, httplib::Response& res) { reply(res, api.info()); });
-  using Method = ApiResponse (NavigatorApi::*)(std::string_view) const;
-  const auto post = [&](const char* path, Method method) {
-    server.Post(path, [&api, method](const httplib::Request& req, httplib::Response& res) {
-      reply(res, (api.*method)(req.body));
-    });
+  const auto handle = [&api](const httplib::Request& req, httplib::Response& res) {
+    reply(res, api.handle({req.method, req.path, req.params, req.body}));
   };
-  post("/api/neighbors", &NavigatorApi::neighbors);
-  post("/api/thumbnail", &NavigatorApi::thumbnail);
-  post("/api/export", &NavigatorApi::export_yaml);
-  server.Post("/api/import", [&api](const httplib::Request& req, httplib::Response& res) {
-    reply(res, api.import_yaml(req.body, req.get_param_value("name")));
-  });
+  // Every POST and every GET under /api/ is the API's; other GETs are the page's files.
+  server.Get("/api/.*", handle);
+  server.Post(".*", handle);
   server.Get("/.*", [](const httplib::Request& req, httplib::Response& res) {
     if (const WebAsset* asset = find_asset(req.path)) {
       res.set_content(std::string(asset->body), std::string(asset->content_type).c_str());
@@ -62,21 +54,32 @@ void add_routes(httplib::Server& server, const NavigatorApi& api) {
   });
 }
 
+// What httplib refused before any handler ran. Debian's cpp-httplib 0.11 (a compiled library, so
+// its macros cannot be changed here) refuses form-encoded bodies over 8192 bytes whatever the
+// payload limit, and curl -d sends that type; a POST without Content-Length is its 400.
+std::string refusal(const httplib::Request& req, int status) {
+  const std::string request = req.method + " " + req.path;
+  if (status == 404) return request + ": not found";
+  if (status != 413)
+    return request + ": malformed HTTP request (status " + std::to_string(status) + ")";
+  if (req.get_header_value("Content-Type").rfind("application/x-www-form-urlencoded", 0) == 0)
+    return "body: larger than 8192 bytes, httplib's limit for application/x-www-form-urlencoded "
+           "(send the request as application/json)";
+  return "body: larger than " + std::to_string(kMaxBodyBytes) + " bytes";
+}
+
 // Every failure answers in the API's form: {"error": ...} with 400 for the client's mistakes.
 void add_error_handling(httplib::Server& server) {
   server.set_payload_max_length(kMaxBodyBytes);
   using Handled = httplib::Server::HandlerResponse;
-  server.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request& req,
-                                                                   httplib::Response& res) {
-    if (!res.body.empty()) return Handled::Unhandled;  // an API answer
-    // httplib refuses a body over the limit with 413 before any handler runs; the API reports
-    // every bad request as 400 naming the field.
-    const bool too_large = res.status == 413;
-    reply(res, too_large ? error_response(
-                               400, "body: larger than " + std::to_string(kMaxBodyBytes) + " bytes")
-                         : error_response(res.status, req.method + " " + req.path + ": not found"));
-    return Handled::Handled;
-  }));
+  server.set_error_handler(
+      httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
+        if (!res.body.empty()) return Handled::Unhandled;  // an API answer
+        // httplib refuses a body over the limit with 413; the API reports every bad request as
+        // 400 naming the field.
+        reply(res, error_response(res.status == 413 ? 400 : res.status, refusal(req, res.status)));
+        return Handled::Handled;
+      }));
   server.set_exception_handler(
       [](const httplib::Request&, httplib::Response& res, std::exception_ptr error) {
         try {

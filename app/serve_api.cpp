@@ -63,6 +63,25 @@ json parse_body(std::string_view body, const std::vector<std::string>& allowed) 
   return request;
 }
 
+// Whether `value` nests more than `levels` arrays or objects; looks no deeper than that, so a
+// hostile body cannot make this, or the recursive dump(), run out of stack.
+bool deeper_than(const json& value, int levels) {
+  if (!value.is_structured()) return false;
+  if (levels == 0) return true;
+  for (const json& child : value)
+    if (deeper_than(child, levels - 1)) return true;
+  return false;
+}
+
+// A value as an error message quotes it: cut to 80 characters, so that a 64 KiB value does not
+// come back whole, and not dumped at all when nested deeply.
+std::string shown(const json& value) {
+  if (deeper_than(value, 3)) return "a value nested too deeply";
+  std::string text = json_text(value);
+  if (text.size() > 80) text = text.substr(0, 77) + "...";
+  return text;
+}
+
 const json& require(const json& request, const std::string& field) {
   const auto it = request.find(field);
   if (it == request.end()) throw RequestError(field, "missing");
@@ -72,7 +91,7 @@ const json& require(const json& request, const std::string& field) {
 std::optional<std::string> optional_string(const json& request, const std::string& field) {
   const auto it = request.find(field);
   if (it == request.end()) return std::nullopt;
-  if (!it->is_string()) throw RequestError(field, "expected a string, got " + it->dump());
+  if (!it->is_string()) throw RequestError(field, "expected a string, got " + shown(*it));
   return it->get<std::string>();
 }
 
@@ -84,20 +103,10 @@ Material check_held(const Database& db, Material m) {
   return m;
 }
 
-// Whether `value` nests more than `levels` arrays or objects; looks no deeper than that, so a
-// hostile body cannot make this, or the recursive dump() below, run out of stack.
-bool deeper_than(const json& value, int levels) {
-  if (!value.is_structured()) return false;
-  if (levels == 0) return true;
-  for (const json& child : value)
-    if (deeper_than(child, levels - 1)) return true;
-  return false;
-}
-
 // JSON is YAML's flow syntax, so the material reader of the YAML files reads a JSON material
 // as it is, with the same checks and messages ("material:1: params.n: ...").
 Material read_material(const Database& db, const json& value) {
-  if (!value.is_object()) throw RequestError("material", "expected an object, got " + value.dump());
+  if (!value.is_object()) throw RequestError("material", "expected an object, got " + shown(value));
   if (deeper_than(value, 3)) throw RequestError("material", "nested too deeply");
   return check_held(db, material_from_node(YAML::Load(value.dump()), "material", false));
 }
@@ -115,10 +124,10 @@ json material_json(const Material& m) {
 }
 
 double read_radius(const json& value) {
-  if (!value.is_number()) throw RequestError("radius", "expected a number, got " + value.dump());
+  if (!value.is_number()) throw RequestError("radius", "expected a number, got " + shown(value));
   const double radius = value.get<double>();
   if (!std::isfinite(radius) || radius <= 0)
-    throw RequestError("radius", "must be a positive finite distance, got " + value.dump());
+    throw RequestError("radius", "must be a positive finite distance, got " + shown(value));
   return radius;
 }
 
@@ -128,7 +137,7 @@ Tab read_tab(const json& value) {
   std::vector<std::string> names;
   for (Tab t : kTabs) names.emplace_back(tab_name(t));
   throw RequestError("tab",
-                     "unknown tab " + value.dump() + " (expected one of: " + join(names) + ")");
+                     "unknown tab " + shown(value) + " (expected one of: " + join(names) + ")");
 }
 
 int read_clusters(const json& request) {
@@ -136,7 +145,7 @@ int read_clusters(const json& request) {
   if (it == request.end()) return 8;
   if (!it->is_number_integer() || *it < 1 || *it > kMaxClusters)
     throw RequestError(
-        "k", "expected an integer in [1, " + std::to_string(kMaxClusters) + "], got " + it->dump());
+        "k", "expected an integer in [1, " + std::to_string(kMaxClusters) + "], got " + shown(*it));
   return it->get<int>();
 }
 
@@ -235,6 +244,23 @@ ApiResponse error_response(int status, const std::string& message) {
 NavigatorApi::NavigatorApi(const ApiOptions& options)
     : navigator_(Navigator::open(options.db)),
       thumbnails_(navigator_.database(), options.resolution) {}
+
+ApiResponse NavigatorApi::handle(const ApiRequest& r) const {
+  // httplib answers HEAD with a GET handler, and drops the body.
+  if ((r.method == "GET" || r.method == "HEAD") && r.path == "/api/info") return info();
+  if (r.method == "POST") {
+    if (r.body.size() > kMaxBodyBytes)
+      return error_response(400, "body: larger than " + std::to_string(kMaxBodyBytes) + " bytes");
+    if (r.path == "/api/neighbors") return neighbors(r.body);
+    if (r.path == "/api/thumbnail") return thumbnail(r.body);
+    if (r.path == "/api/export") return export_yaml(r.body);
+    if (r.path == "/api/import") {
+      const auto name = r.query.find("name");
+      return import_yaml(r.body, name == r.query.end() ? "" : name->second);
+    }
+  }
+  return error_response(404, std::string(r.method) + " " + std::string(r.path) + ": not found");
+}
 
 ApiResponse NavigatorApi::info() const {
   return answer([&] {

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <string_view>
 
@@ -26,6 +27,14 @@ struct ApiResponse {
 // {"error": message} with status 400 (the client's mistake) or 500 (the server's).
 ApiResponse error_response(int status, const std::string& message);
 
+// A request as the HTTP server decoded it. `query` holds the decoded parameters (httplib's
+// Params); the body is as received.
+struct ApiRequest {
+  std::string_view method, path;
+  const std::multimap<std::string, std::string>& query;
+  std::string_view body;
+};
+
 struct ApiOptions {
   std::filesystem::path db;
   int resolution = 128;  // thumbnail width and height
@@ -40,6 +49,11 @@ class NavigatorApi {
   explicit NavigatorApi(const ApiOptions& options);
   NavigatorApi(const NavigatorApi&) = delete;  // thumbnails_ refers into navigator_
   NavigatorApi& operator=(const NavigatorApi&) = delete;
+
+  // Every route of the API: GET /api/info and the POSTs below; any other method or path is 404
+  // {"error": "<METHOD> <path>: not found"}, a body over kMaxBodyBytes 400. What the server and
+  // the fuzzer of tests/fuzz/serve_request.cpp call.
+  ApiResponse handle(const ApiRequest& request) const;
 
   // GET /api/info: models and parameter tables, tabs, displays and views, radius range, the
   // start material and the database's provenance.
