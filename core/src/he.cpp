@@ -3,6 +3,8 @@
 // plus a mirror term F exp(-g_s) S.
 #include <brdfnav/core/he.h>
 
+#include "he_tables.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -120,6 +122,11 @@ Rgb series_sum(const Rgb& g, const Rgb& t) {
              channel_series_sum(g[2], t[2]));
 }
 
+Rgb tabulated_series_sum(const Rgb& g, const Rgb& t) {
+  return Rgb(tabulated_series_sum(g[0], t[0]), tabulated_series_sum(g[1], t[1]),
+             tabulated_series_sum(g[2], t[2]));
+}
+
 Rgb rough_limit_sum(const Rgb& g, const Rgb& t) {
   return (-t / g).exp() / g;
 }
@@ -128,7 +135,7 @@ Rgb distribution_sum(const Rgb& g, const Rgb& t) {
   Rgb out;
   for (int c = 0; c < 3; ++c) {
     const double w = smoothstep((g[c] - kBlendLo) / (kBlendHi - kBlendLo));
-    const double series = w < 1 ? channel_series_sum(g[c], t[c]) : 0.0;
+    const double series = w < 1 ? tabulated_series_sum(g[c], t[c]) : 0.0;
     const double limit = w > 0 ? std::exp(-t[c] / g[c]) / g[c] : 0.0;
     out[c] = (1.0 - w) * series + w * limit;
   }
@@ -139,14 +146,10 @@ Rgb distribution_sum(const Rgb& g, const Rgb& t) {
 
 namespace {
 
-constexpr double kSqrtPi = 1.7724538509055160273;
 // Cosines are floored here: S1 ~ cos near grazing cancels the 1/cos of the lobe, and the floor
 // keeps that cancellation free of 0/0 and overflow for directions on (or rounding onto) the
 // horizon.
 constexpr double kMinCos = 1e-10;
-// For a beyond this erfc(a) < 1e-295 and exp(-a^2) underflows: S1 = 1 and K = 0 exactly in
-// double precision (this also covers normal incidence, where cot(theta) is infinite).
-constexpr double kUnshadowedA = 26.0;
 
 // Per-channel 1 / lambda^2 (micrometres^-2).
 Rgb inv_lambda_squared() {
@@ -169,33 +172,22 @@ struct AngleTerms {
   double k;          // K
 };
 
-AngleTerms angle_terms(double cos_theta, double sin_theta, double sigma, double tau) {
-  const double denom = 2.0 * sigma * sin_theta;
-  if (tau * cos_theta >= kUnshadowedA * denom) return {1.0, 0.0};
-  const double a = tau * cos_theta / denom;
-  const double erfc_a = std::erfc(a);
-  const double l = 0.5 * (std::exp(-a * a) / (kSqrtPi * a) - erfc_a);
-  return {(1.0 - 0.5 * erfc_a) / (1.0 + l), sin_theta / cos_theta * erfc_a};
+// With exact_shadowing (the mirror term, sampling) or tabulated_shadowing (eval), which are 1 and
+// 0 from a_end on. That also covers normal incidence, where cot(theta) is infinite.
+template <typename Shadow>
+AngleTerms angle_terms(double cos_theta, double sin_theta, const He& he, double a_end,
+                       Shadow&& shadow) {
+  const double denom = 2.0 * he.sigma * sin_theta;
+  if (he.tau * cos_theta >= a_end * denom) return {1.0, 0.0};
+  const he_detail::Shadowing s = shadow(he.tau * cos_theta / denom);
+  return {s.s1, sin_theta / cos_theta * s.erfc};
 }
 
-// Root x >= 0 of x exp(x^2 / 2) = y. The left side is increasing and convex, so Newton started
-// to the right of the root converges monotonically: x <= y always, and x <= sqrt(2 ln y) once
-// the root is >= 1 (which holds when y >= exp(1/2)).
-double solve_x_exp_half_x2(double y) {
-  if (!(y > 0)) return 0.0;
-  double x = y <= std::exp(0.5) ? y : std::sqrt(2.0 * std::log(y));
-  for (int i = 0; i < 40; ++i) {
-    const double step = (x - y * std::exp(-0.5 * x * x)) / (1.0 + x * x);
-    x -= step;
-    if (std::abs(step) <= 1e-13 * x) break;
-  }
-  return x;
-}
-
-// sigma0 = sigma / sqrt(1 + x^2) with x = z0 / sigma from K_i + K_o.
-double effective_sigma(double sigma, double k_sum) {
-  const double x = solve_x_exp_half_x2(k_sum / std::sqrt(8.0 * kPi));
-  return sigma / std::sqrt(1.0 + x * x);
+// sigma0 = sigma / sqrt(1 + x^2) with x = z0 / sigma from K_i + K_o; `ratio` is the exact or the
+// tabulated 1 / sqrt(1 + x^2) as a function of y = (K_i + K_o) / sqrt(8 pi).
+template <typename Ratio>
+double effective_sigma(double sigma, double k_sum, Ratio&& ratio) {
+  return k_sum > 0 ? sigma * ratio(k_sum / std::sqrt(8.0 * kPi)) : sigma;
 }
 
 double floored_cos(const Vec3& w) {
@@ -215,9 +207,10 @@ struct MirrorTerms {
 
 MirrorTerms mirror_terms(const He& he, const Vec3& wo) {
   const double cos_o = floored_cos(wo);
-  const AngleTerms t = angle_terms(cos_o, sin_theta(wo), he.sigma, he.tau);
+  const AngleTerms t =
+      angle_terms(cos_o, sin_theta(wo), he, he_detail::kUnshadowedA, he_detail::exact_shadowing);
   return {cos_o, fresnel_dielectric(cos_o, he.eta), t.shadowing,
-          effective_sigma(he.sigma, 2.0 * t.k)};
+          effective_sigma(he.sigma, 2.0 * t.k, he_detail::sigma0_ratio)};
 }
 
 // g at the mirror direction per channel: (4 pi sigma0 cos / lambda)^2.
@@ -241,23 +234,36 @@ std::array<double, 2> sampling_slopes(const He& he, const Vec3& wo) {
 
 }  // namespace
 
+He::DirectionTerms He::direction_terms(const Vec3& w) const {
+  const double cos = floored_cos(w);
+  const AngleTerms t = angle_terms(cos, sin_theta(w), *this, he_detail::kShadowTableEnd,
+                                   he_detail::tabulated_shadowing);
+  return {w, cos, t.shadowing, t.k};
+}
+
 Rgb He::eval(const Vec3& wi, const Vec3& wo) const {
   if (wi.z() <= 0 || wo.z() <= 0) return Rgb::Zero();
-  // Every quantity below is computed symmetrically in (wi, wo): reciprocity holds to the bit.
-  const double cos_i = floored_cos(wi), cos_o = floored_cos(wo);
-  const double vx = wi.x() + wo.x(), vy = wi.y() + wo.y();
+  return lobe(direction_terms(wi), direction_terms(wo));
+}
+
+Rgb He::Bound::eval(const Vec3& wi) const {
+  if (wi.z() <= 0 || wo.w.z() <= 0) return Rgb::Zero();
+  return he.lobe(he.direction_terms(wi), wo);
+}
+
+Rgb He::lobe(const DirectionTerms& i, const DirectionTerms& o) const {
+  // Every quantity below is computed symmetrically in (i, o): reciprocity holds to the bit.
+  const double vx = i.w.x() + o.w.x(), vy = i.w.y() + o.w.y();
   const double vxy2 = vx * vx + vy * vy;
-  const double vz = cos_i + cos_o;
+  const double vz = i.cos + o.cos;
   const double v2 = vxy2 + vz * vz;
   // For unit wi, wo: wi.h = (1 + wi.wo) / |wi + wo| = |wi + wo| / 2 (no degenerate h needed).
   const double fresnel = fresnel_dielectric(std::min(0.5 * std::sqrt(v2), 1.0), eta);
-  const AngleTerms ti = angle_terms(cos_i, sin_theta(wi), sigma, tau);
-  const AngleTerms to = angle_terms(cos_o, sin_theta(wo), sigma, tau);
-  const double sigma0 = effective_sigma(sigma, ti.k + to.k);
+  const double sigma0 = effective_sigma(sigma, i.k + o.k, he_detail::tabulated_sigma0_ratio);
   const double geometry = (v2 / vz) * (v2 / vz);
   // Products of an i and an o factor are formed first: commutative, hence bitwise symmetric.
-  const double shadowing = ti.shadowing * to.shadowing;
-  const double cos_product = cos_i * cos_o;
+  const double shadowing = i.shadowing * o.shadowing;
+  const double cos_product = i.cos * o.cos;
   const double common = fresnel * shadowing * geometry / (kPi * cos_product);
 
   // Per channel: g = (2 pi sigma0 vz / lambda)^2, t = pi^2 tau^2 vxy^2 / lambda^2 and D's prefactor

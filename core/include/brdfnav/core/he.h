@@ -26,8 +26,24 @@ struct He {
 
   explicit He(std::span<const double> p) : sigma(p[0]), tau(p[1]), eta(p[2]) {}
 
+  // The factors of eval() that depend on one direction alone.
+  struct DirectionTerms {
+    Vec3 w;
+    double cos;        // floored, see he.cpp
+    double shadowing;  // S1(theta)
+    double k;          // K(theta) = tan(theta) erfc(a)
+  };
+  // eval() at one wo with wo's terms computed once, for many wi (the renderer's quadrature):
+  // bind(wo).eval(wi) equals eval(wi, wo) to the bit.
+  struct Bound {
+    const He& he;
+    DirectionTerms wo;
+    Rgb eval(const Vec3& wi) const;
+  };
+
   // Directional-diffuse term only (the mirror term is a delta: see mirror_weight()).
   Rgb eval(const Vec3& wi, const Vec3& wo) const;
+  Bound bind(const Vec3& wo) const { return {*this, direction_terms(wo)}; }
   // Reflects wo about a Beckmann half vector (a mixture of two slopes chosen from sigma0 at wo,
   // tau and lambda); pdf() is the exact density of the directions it returns.
   std::optional<Vec3> sample(const Vec3& wo, const Vec2& u) const;
@@ -37,22 +53,55 @@ struct He {
   double albedo_hint(const Vec3& wo) const;
   // Reflectance of the mirror term at wo, per channel: F(cos_o) exp(-g_s) S.
   Rgb mirror_weight(const Vec3& wo) const;
+
+ private:
+  DirectionTerms direction_terms(const Vec3& w) const;
+  // The lobe from both directions' terms, formed symmetrically: lobe(i, o) == lobe(o, i).
+  Rgb lobe(const DirectionTerms& i, const DirectionTerms& o) const;
 };
 
 // The sum over m in He's distribution D (without the pi^2 tau^2 / (4 lambda^2) prefactor), per
-// channel, with t = pi^2 tau^2 vxy^2 / lambda^2. Exposed so that tests can compare the series
-// with its rough-surface limit inside the blend range.
+// channel, with t = pi^2 tau^2 vxy^2 / lambda^2, and the factors that eval() tabulates. Exposed
+// so that tests can compare the tables with the exact forms and the series with its
+// rough-surface limit inside the blend range.
 namespace he_detail {
 // Blend range of g: the series below kBlendLo, the rough limit above kBlendHi.
 inline constexpr double kBlendLo = 14.0;
 inline constexpr double kBlendHi = 22.0;
 // sum_{m>=1} exp(-g) g^m / (m! m) exp(-t / m) over m <= 64, to a relative 1e-10; a sum below
 // 1e-14 of its value at t = 0 (the peak over directions) may come back as 0. Channels with
-// g <= 0 give 0.
+// g <= 0 give 0. The exact reference for the tables that eval() uses (tests compare them).
 Rgb series_sum(const Rgb& g, const Rgb& t);
+// The same sum interpolated from a table (core/src/he_tables.cpp) for 0 < g <= kBlendHi, to a
+// relative 1e-5 where the sum is above 1e-8 of its value at t = 0, to 1e-14 of that value
+// elsewhere; what eval() uses.
+Rgb tabulated_series_sum(const Rgb& g, const Rgb& t);
+
+// Exact and tabulated forms of the other costly factors: the mirror term and sampling use the
+// exact ones, eval() the tables (tests compare them).
+// Shadowing of one direction as a function of a = tau cot(theta) / (2 sigma): S1 and erfc(a).
+struct Shadowing {
+  double s1;
+  double erfc;
+};
+// From the sheet's formulas, for 0 < a < kUnshadowedA: beyond it erfc(a) < 1e-295 and exp(-a^2)
+// underflows, S1 = 1 and K = 0 exactly in double precision.
+inline constexpr double kUnshadowedA = 26.0;
+Shadowing exact_shadowing(double a);
+// Interpolated, for 0 <= a < kShadowTableEnd. Beyond it S1 = 1 and erfc(a) = 0 as far as eval()
+// is concerned: 1 - S1 < 1e-17, and K = tan erfc(a) < 1e-12 moves sigma0 by < 1e-24.
+inline constexpr double kShadowTableEnd = 6.0;
+Shadowing tabulated_shadowing(double a);
+
+// sigma0 / sigma = 1 / sqrt(1 + x^2) with x exp(x^2 / 2) = y, y >= 0: exact (Newton) and
+// interpolated (Newton beyond the table).
+double sigma0_ratio(double y);
+double tabulated_sigma0_ratio(double y);
+
 // The large-g limit exp(-t / g) / g.
 Rgb rough_limit_sum(const Rgb& g, const Rgb& t);
-// series_sum below kBlendLo, rough_limit_sum above kBlendHi, a smoothstep blend in between.
+// tabulated_series_sum below kBlendLo, rough_limit_sum above kBlendHi, a smoothstep blend in
+// between.
 Rgb distribution_sum(const Rgb& g, const Rgb& t);
 }  // namespace he_detail
 
