@@ -26,6 +26,7 @@ struct ValidateOptions {
   std::vector<std::string> envs{kStudioLights + "forest.exr", kStudioLights + "courtyard.exr"};
   int resolution = 128;
   int pairs = 50;
+  int fit_samples = 20;
   std::string out;
 };
 
@@ -126,6 +127,7 @@ ValidationResults run(const ValidateOptions& o) {
   if (in.db) {
     Renderer exact(*in.db_env, *in.db_scene, in.db->manifest().resolution);
     r.embedding = timed("embedding", [&] { return embedding_study(*in.db, exact, o.pairs); });
+    r.fits = timed("fits", [&] { return fit_study(*in.db, o.fit_samples); });
   }
   return r;
 }
@@ -146,6 +148,10 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--pairs", o->pairs, "Random material pairs for the embedding's error")
       ->capture_default_str()
       ->check(CLI::Range(2, 100000));
+  cmd->add_option("--fit-samples", o->fit_samples,
+                  "Nodes per model converted both in BRDF space and in the image metric")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--out,-o", o->out, "Report directory (created if missing)")->required();
   cmd->callback([o] {
     const ocio::ColorPipeline colour;

@@ -101,6 +101,20 @@ void emit_embedding(YAML::Emitter& out, const EmbeddingStudy& s) {
   out << YAML::EndMap;
 }
 
+void emit_fits(YAML::Emitter& out, const FitStudy& s) {
+  out << YAML::Key << "fits" << YAML::Value << YAML::BeginMap << YAML::Key << "per_pair"
+      << YAML::Value << s.per_pair << YAML::Key << "ratio_median" << YAML::Value << s.ratio_median
+      << YAML::Key << "ratio_p90" << YAML::Value << s.ratio_p90 << YAML::Key << "pairs"
+      << YAML::Value << YAML::BeginSeq;
+  for (const FitPairStudy& p : s.pairs)
+    out << YAML::Flow << YAML::BeginMap << YAML::Key << "from" << YAML::Value
+        << std::string(model_info(p.from).name) << YAML::Key << "to" << YAML::Value
+        << std::string(model_info(p.to).name) << YAML::Key << "brdf_fit" << YAML::Value
+        << p.brdf_fit << YAML::Key << "image_fit" << YAML::Value << p.image_fit << YAML::Key
+        << "between" << YAML::Value << p.between << YAML::EndMap;
+  out << YAML::EndSeq << YAML::EndMap;
+}
+
 // --- report.md -----------------------------------------------------------------------------------
 
 std::string num(double v, int digits = 3) {
@@ -189,6 +203,22 @@ void md_embedding(std::ostringstream& md, const EmbeddingStudy& s, const std::st
   md << "\n";
 }
 
+void md_fits(std::ostringstream& md, const FitStudy& s) {
+  md << "## Conversions: BRDF space against the image metric\n\n"
+     << s.per_pair << " random nodes of each model (rho_d = 0, rho_s = 1), converted into every "
+     << "other model by the database's BRDF-space fit and by a fit of the embedded distance "
+     << "(Levenberg-Marquardt, rho_s in closed form). Medians of the embedded distance from the "
+     << "node to each fit and between the two fits:\n\n"
+     << "| from | to | BRDF-space fit | image-metric fit | between the fits |\n"
+     << "|---|---|---|---|---|\n";
+  for (const FitPairStudy& p : s.pairs)
+    md << "| " << model_info(p.from).name << " | " << model_info(p.to).name << " | "
+       << num(p.brdf_fit, 4) << " | " << num(p.image_fit, 4) << " | " << num(p.between, 4)
+       << " |\n";
+  md << "\nBRDF-space fit distance / image-metric fit distance over every sample: median "
+     << num(s.ratio_median, 3) << ", p90 " << num(s.ratio_p90, 3) << ".\n\n";
+}
+
 }  // namespace
 
 std::string report_yaml(const ValidationResults& r, const std::vector<ReportFile>& files) {
@@ -205,6 +235,7 @@ std::string report_yaml(const ValidationResults& r, const std::vector<ReportFile
   emit_spacing(out, "figure8", kFig8Parameter, r.fig8);
   emit_spacing(out, "figure9", kFig9Parameter, r.fig9);
   if (r.embedding) emit_embedding(out, *r.embedding);
+  if (r.fits) emit_fits(out, *r.fits);
   out << YAML::Key << "plots" << YAML::Value << YAML::BeginSeq;
   for (const ReportFile& f : files)
     out << YAML::Flow << YAML::BeginMap << YAML::Key << "figure" << YAML::Value << f.figure
@@ -232,6 +263,7 @@ std::string report_markdown(const ValidationResults& r, const std::vector<Report
     md_embedding(md, *r.embedding, r.database);
     md << images(files, "embedding");
   }
+  if (r.fits) md_fits(md, *r.fits);
   return md.str();
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <brdfnav/ocio/color_pipeline.h>
+#include <brdfnav/precompute/fit_study.h>
 #include <brdfnav/precompute/validation.h>
 
 #include <filesystem>
@@ -22,6 +23,7 @@ struct ValidationResults {
   SceneStudy fig3;
   SpacingStudy fig8, fig9;  // Ward's alpha; Lafortune's cz at n = 800
   std::optional<EmbeddingStudy> embedding;
+  std::optional<FitStudy> fits;  // BRDF-space against image-metric conversions
 };
 
 // The parameter each spacing study sweeps, for labels.

@@ -1,10 +1,12 @@
 #include <brdfnav/precompute/database.h>
+#include <brdfnav/precompute/fit_study.h>
 #include <brdfnav/precompute/render.h>
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -154,6 +156,36 @@ TEST(Database, ConversionsAreFitsWithTheirImageDistance) {
   }
   // cz = 1/sqrt(3) is exactly a Phong lobe: Blinn-Phong fits it far better than the tilted lobe.
   EXPECT_LT(t.nodes[1].relative_error, t.nodes[0].relative_error);
+}
+
+TEST(Database, ImageMetricFitRecoversAMaterialOfItsOwnModel) {
+  const Database db = Database::open(fixture().db);
+  const ModelEmbedding& ward = *db.embedding(ModelId::ward);
+  Material m = default_material(ModelId::ward);
+  m.params = {0.05, 0.12};
+  m.rho_d = Rgb::Zero();
+  m.rho_s = Rgb(0.5, 0.3, 0.2);
+  const Eigen::VectorXf target = ward.embed(m);
+  // Started at the wrong corner of the grid: the fit must find its way back.
+  const ImageFit fit = fit_in_embedding(ward, target, {0.3, 0.02});
+  EXPECT_LT(fit.distance, 1e-3 * target.norm());
+  EXPECT_NEAR(std::log(fit.material.params[0]), std::log(0.05), 0.02);
+  EXPECT_NEAR(std::log(fit.material.params[1]), std::log(0.12), 0.02);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(fit.material.rho_s[c], m.rho_s[c], 0.01 * m.rho_s[c]);
+}
+
+TEST(Database, ImageMetricFitsAreNoFartherThanTheBrdfSpaceFits) {
+  const Database db = Database::open(fixture().db);
+  const FitStudy study = fit_study(db, 4);
+  ASSERT_EQ(study.pairs.size(), 6u);  // three models, every ordered pair
+  for (const FitPairStudy& p : study.pairs) {
+    EXPECT_EQ(p.samples, 4);
+    // The BRDF-space fit is one of the image fit's starts.
+    EXPECT_LE(p.image_fit, p.brdf_fit * (1 + 1e-5) + 1e-7) << model_info(p.from).name;
+    EXPECT_GE(p.between, 0.0);
+  }
+  EXPECT_GE(study.ratio_median, 1 - 1e-5);
+  EXPECT_GE(study.ratio_p90, study.ratio_median);
 }
 
 TEST(Database, RejectsAFlippedByteNamingTheFile) {
