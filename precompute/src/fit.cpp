@@ -2,8 +2,7 @@
 
 #include <brdfnav/core/grid.h>
 
-#include <unsupported/Eigen/LevenbergMarquardt>
-#include <unsupported/Eigen/NumericalDiff>
+#include "levenberg_marquardt.h"
 
 #include <algorithm>
 #include <numeric>
@@ -82,16 +81,6 @@ class FitProblem {
   ModelId model_;
   ParamBox box_;
   mutable int evaluations_ = 0;
-};
-
-// Adapter for Eigen's Levenberg-Marquardt (forward-difference Jacobian).
-struct LmFunctor : Eigen::DenseFunctor<double> {
-  const FitProblem& problem;
-  LmFunctor(const FitProblem& p, int n) : DenseFunctor(n, p.residual_count()), problem(p) {}
-  int operator()(const InputType& x, ValueType& r) const {
-    problem.evaluate(x, &r);
-    return 0;
-  }
 };
 
 // Every other grid node of `model` along each axis (the last one kept), in scale coordinates: a
@@ -175,11 +164,9 @@ LobeFit fit_lobe(const Lobe& target, ModelId model, const FitOptions& options) {
   // Each start is refined on the coarse quadrature; the best result is polished on the full one.
   const int n = static_cast<int>(starts[order[0]].size());
   auto refine = [&](const FitProblem& p, Eigen::VectorXd x) {
-    LmFunctor functor(p, n);
-    Eigen::NumericalDiff<LmFunctor> numeric(functor);
-    Eigen::LevenbergMarquardt<Eigen::NumericalDiff<LmFunctor>> lm(numeric);
-    lm.setMaxfev(options.max_iterations * (n + 1));
-    lm.minimize(x);
+    x = levenberg_marquardt(
+        [&p](const Eigen::VectorXd& in, Eigen::VectorXd& r) { p.evaluate(in, &r); },
+        p.residual_count(), std::move(x), options.max_iterations * (n + 1));
     return Eigen::VectorXd(x.cwiseMax(p.box().lo).cwiseMin(p.box().hi));
   };
   Eigen::VectorXd best = starts[order[0]];

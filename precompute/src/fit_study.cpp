@@ -1,7 +1,6 @@
 #include <brdfnav/precompute/fit_study.h>
 
-#include <unsupported/Eigen/LevenbergMarquardt>
-#include <unsupported/Eigen/NumericalDiff>
+#include "levenberg_marquardt.h"
 
 #include <algorithm>
 #include <limits>
@@ -74,25 +73,13 @@ class EmbeddedFit {
   std::vector<double> lo_, hi_;
 };
 
-struct Functor : Eigen::DenseFunctor<double> {
-  const EmbeddedFit& fit;
-  Functor(const EmbeddedFit& f, int n) : DenseFunctor(n, f.residual_count()), fit(f) {}
-  int operator()(const InputType& x, ValueType& r) const {
-    fit.material(x, &r);
-    return 0;
-  }
-};
-
-Eigen::VectorXd refine(const EmbeddedFit& fit, Eigen::VectorXd x) {
-  Functor functor(fit, static_cast<int>(x.size()));
+Eigen::VectorXd refine(const EmbeddedFit& fit, const Eigen::VectorXd& x) {
   // Steps of 1e-3 of x: the embedding is single precision, so the default steps (1e-8 of x)
   // would see no change at all.
   constexpr double kStepSquared = 1e-6;
-  Eigen::NumericalDiff<Functor> numeric(functor, kStepSquared);
-  Eigen::LevenbergMarquardt<Eigen::NumericalDiff<Functor>> lm(numeric);
-  lm.setMaxfev(kMaxIterations * static_cast<int>(x.size() + 1));
-  lm.minimize(x);
-  return x;
+  return levenberg_marquardt(
+      [&fit](const Eigen::VectorXd& in, Eigen::VectorXd& r) { fit.material(in, &r); },
+      fit.residual_count(), x, kMaxIterations * static_cast<int>(x.size() + 1), kStepSquared);
 }
 
 // Every grid node and every cell centre, in scale units, nearest to `target` first.
