@@ -4,6 +4,8 @@
 
 #include <brdfnav/core/closure.h>
 
+#include <type_traits>
+
 namespace brdfnav {
 
 // Where a kernel is large: around `peak` (unit), roughly a Gaussian with angular standard
@@ -24,29 +26,62 @@ struct KernelShape {
   }
 };
 
-// rho_s = 1 lobe of a closure times the cosine, in the frame of one pixel.
+// A kernel's value is a double (grey kernels) or an Rgb.
+template <typename V>
+V zero() {
+  if constexpr (std::is_same_v<V, double>)
+    return 0.0;
+  else
+    return V::Zero();
+}
+inline bool positive(double k) {
+  return k > 0;
+}
+inline bool positive(const Rgb& k) {
+  return (k > 0).any();
+}
+inline double max0(double k) {
+  return std::max(k, 0.0);
+}
+inline Rgb max0(const Rgb& k) {
+  return k.cwiseMax(0);
+}
+
+// Whether a lobe is the same in every channel (all but He's): its kernel is then a double, which
+// the quadrature sums a third as often as an Rgb.
+template <typename L>
+constexpr bool kGreyLobe = !std::is_same_v<L, He>;
+
+// rho_s = 1 lobe of a closure times the cosine, in the frame of one pixel: a double for grey
+// lobes, an Rgb otherwise.
 template <typename L>
 struct LobeKernel {
+  using Value = std::conditional_t<kGreyLobe<L>, double, Rgb>;
   const L& lobe;
   Frame frame;
   Vec3 wo;  // local
 
-  Rgb value(const Vec3& wi_world) const {
+  Value value(const Vec3& wi_world) const {
     const Vec3 wi = frame.to_local(wi_world);
-    if (wi.z() <= 0) return Rgb::Zero();
-    return lobe.eval(wi, wo) * wi.z();
+    if (wi.z() <= 0) return zero<Value>();
+    if constexpr (kGreyLobe<L>)
+      return lobe.eval(wi, wo)[0] * wi.z();
+    else
+      return lobe.eval(wi, wo) * wi.z();
   }
 };
 
 // Lambert with rho_d = 1: cos / pi.
 struct LambertKernel {
+  using Value = double;
   Vec3 normal;
-  Rgb value(const Vec3& wi) const { return Rgb::Constant(std::max(0.0, normal.dot(wi)) * kInvPi); }
+  double value(const Vec3& wi) const { return std::max(0.0, normal.dot(wi)) * kInvPi; }
 };
 
 // He's mirror term: weight * a normalised von Mises-Fisher filter of angular width `width`
 // around the mirror direction, i.e. an environment lookup filtered over the pixel's footprint.
 struct MirrorKernel {
+  using Value = Rgb;
   Vec3 axis;
   Rgb weight;
   double kappa, norm;

@@ -17,6 +17,7 @@
 #include <brdfnav/precompute/render.h>
 
 #include <array>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -31,11 +32,22 @@ struct AlwaysVisible {
 struct QuadratureScratch {
   std::vector<std::pair<int, int>> spans;  // per window row: first and last (unwrapped) column
   std::vector<std::size_t> offsets;        // per window row: index of its first node below
-  std::vector<Rgb> kernel, power;          // per window node
+  std::vector<double> grey;                // K per window node, for grey kernels
+  std::vector<Rgb> colour, power;          // K per window node for the others; power
+
+  template <typename V>
+  std::vector<V>& kernel() {
+    if constexpr (std::is_same_v<V, double>)
+      return grey;
+    else
+      return colour;
+  }
 };
 
 template <typename Kernel, typename Visible = AlwaysVisible>
 class Quadrature {
+  using Value = typename Kernel::Value;
+
  public:
   // `horizon` is the normal of the half space the kernel lives in (K = 0 below it), or zero for
   // a kernel without one (He's mirror filter, which is no BRDF).
@@ -51,6 +63,7 @@ class Quadrature {
     const double wide = shape.channel_scale.maxCoeff();
     major_width_ = shape.major_width * wide;
     minor_width_ = shape.minor_width * wide;
+    inv_major_ = 1 / major_width_, inv_minor_ = 1 / minor_width_;
     reach_ = quality.reach;
     // Broad kernels too: the horizon cuts every lobe, and the second differences only correct
     // what is smooth at the scale of a node.
@@ -97,14 +110,14 @@ class Quadrature {
   bool in_window(const Vec3& w, double margin, double reach) const {
     const Vec3 offset = w - peak_;
     if (offset.squaredNorm() > 2 && reach * major_width_ < kPi / 2) return false;  // far side
-    const double a = std::max(0.0, std::abs(offset.dot(major_)) - margin) / major_width_;
-    const double b = std::max(0.0, std::abs(offset.dot(minor_)) - margin) / minor_width_;
+    const double a = std::max(0.0, std::abs(offset.dot(major_)) - margin) * inv_major_;
+    const double b = std::max(0.0, std::abs(offset.dot(minor_)) - margin) * inv_minor_;
     return a * a + b * b <= reach * reach;
   }
 
-  Rgb value(const Vec3& w) const {
-    const Rgb k = kernel_.value(w);
-    if (!(k > 0).any() || !visible_(w)) return Rgb::Zero();
+  Value value(const Vec3& w) const {
+    const Value k = kernel_.value(w);
+    if (!positive(k) || !visible_(w)) return zero<Value>();
     return k;
   }
 
@@ -125,38 +138,73 @@ class Quadrature {
     int y0 = 0;
     s.spans.clear();
     if (!ellipse_spans(margin, y0, s.spans)) cap_spans(margin, y0, s.spans);
-    const std::size_t rows = s.spans.size();
+    evaluate(s, y0, margin);
+    return corrected_sum(s);
+  }
+
+  // K and power at every node of the window's rows, both zero outside the window.
+  void evaluate(QuadratureScratch& s, int y0, double margin) const {
+    const int rows = static_cast<int>(s.spans.size());
     s.offsets.resize(rows + 1);
-    s.kernel.clear(), s.power.clear();
-    for (std::size_t r = 0; r < rows; ++r) {
-      s.offsets[r] = s.kernel.size();
+    s.offsets[0] = 0;
+    for (int r = 0; r < rows; ++r)
+      s.offsets[r + 1] = s.offsets[r] + (s.spans[r].second - s.spans[r].first + 1);
+    std::vector<Value>& kernel = s.kernel<Value>();
+    kernel.resize(s.offsets[rows]);
+    s.power.resize(s.offsets[rows]);
+    for (int r = 0; r < rows; ++r) {
       const double theta = (y0 + r + 0.5) * node_angle_;
       const double st = std::sin(theta), ct = std::cos(theta);
       const auto [x0, x1] = s.spans[r];
-      for (int xs = x0, x = wrap(x0); xs <= x1; ++xs, x = x + 1 == grid_w_ ? 0 : x + 1) {
-        const EnvNode n = grid_node(x, y0 + static_cast<int>(r), st, ct);
+      std::size_t i = s.offsets[r];
+      for (int xs = x0, x = wrap(x0); xs <= x1; ++xs, ++i, x = x + 1 == grid_w_ ? 0 : x + 1) {
+        const EnvNode n = grid_node(x, y0 + r, st, ct);
         const bool inside = in_window(n.centroid, margin, reach_);
-        s.kernel.push_back(inside ? value(n.centroid) : Rgb::Zero());
-        s.power.push_back(inside ? n.power : Rgb::Zero());
+        kernel[i] = inside ? value(n.centroid) : zero<Value>();
+        s.power[i] = inside ? n.power : Rgb::Zero();
       }
     }
-    s.offsets[rows] = s.kernel.size();
+  }
+
+  // The K values of window row r met column by column along another row's span: null outside
+  // row r's span (rows spanning the whole grid wrap around) or when there is no row r.
+  struct Cursor {
+    const Value* row = nullptr;
+    int i = 0, n = 0;
+    bool full = false;
+    const Value* get() const { return row && i >= 0 && i < n ? row + i : nullptr; }
+    void next() {
+      if (++i == n && full) i = 0;
+    }
+  };
+
+  Cursor cursor(QuadratureScratch& s, int r, int xs) const {
+    if (r < 0 || r >= static_cast<int>(s.spans.size())) return {};
+    const auto [x0, x1] = s.spans[r];
+    const int n = x1 - x0 + 1;
+    const bool full = n >= grid_w_;
+    return {&s.kernel<Value>()[s.offsets[r]], full ? wrap(xs - x0) : xs - x0, n, full};
+  }
+
+  Rgb corrected_sum(QuadratureScratch& s) const {
     Rgb sum = Rgb::Zero();
-    for (std::size_t r = 0; r < rows; ++r) {
+    for (int r = 0; r < static_cast<int>(s.spans.size()); ++r) {
       const auto [x0, x1] = s.spans[r];
-      const bool full = x1 - x0 + 1 >= grid_w_;
-      for (int xs = x0; xs <= x1; ++xs) {
-        const std::size_t i = s.offsets[r] + (xs - x0);
-        if (!(s.power[i] > 0).any()) continue;
-        Rgb k = s.kernel[i];
-        const Rgb* up = r > 0 ? at(s, r - 1, xs) : nullptr;
-        const Rgb* down = r + 1 < rows ? at(s, r + 1, xs) : nullptr;
-        if (up && down && (full || (xs > x0 && xs < x1))) {
-          const std::size_t left = xs > x0 ? i - 1 : s.offsets[r + 1] - 1;
-          const std::size_t right = xs < x1 ? i + 1 : s.offsets[r];
-          k = (k + (*up + *down + s.kernel[left] + s.kernel[right] - 4 * k) / 24).cwiseMax(0);
+      const int n = x1 - x0 + 1;
+      const bool full = n >= grid_w_;
+      const Value* k = &s.kernel<Value>()[s.offsets[r]];
+      const Rgb* power = &s.power[s.offsets[r]];
+      Cursor up = cursor(s, r - 1, x0), down = cursor(s, r + 1, x0);
+      for (int j = 0; j < n; ++j, up.next(), down.next()) {
+        if (!positive(power[j])) continue;
+        Value v = k[j];
+        const Value *u = up.get(), *d = down.get();
+        if (u && d && (full || (j > 0 && j + 1 < n))) {
+          const Value& left = k[j > 0 ? j - 1 : n - 1];
+          const Value& right = k[j + 1 < n ? j + 1 : 0];
+          v = max0(v + (*u + *d + left + right - 4 * v) / 24);
         }
-        sum += s.power[i] * k;
+        sum += power[j] * v;
       }
     }
     return sum;
@@ -167,19 +215,8 @@ class Quadrature {
     return x < 0 ? x + grid_w_ : x;
   }
 
-  // K at unwrapped column xs of window row r, or nullptr outside the row's span (a row spanning
-  // the whole grid wraps around).
-  const Rgb* at(const QuadratureScratch& s, std::size_t r, int xs) const {
-    const auto [x0, x1] = s.spans[r];
-    int i = xs - x0;
-    if (x1 - x0 + 1 >= grid_w_) i = wrap(i);
-    if (i < 0 || i > x1 - x0) return nullptr;
-    return &s.kernel[s.offsets[r] + i];
-  }
-
   // Spans of the spherical cap of the window's major radius (any window, but loose for narrow
-  // ellipses), or of the hemisphere above the horizon when that is smaller; whole rows where the
-  // cap reaches a pole.
+  // ellipses), or of the hemisphere above the horizon when that is smaller.
   void cap_spans(double margin, int& y0, std::vector<std::pair<int, int>>& spans) const {
     double radius = std::min(kPi, reach_ * major_width_ + margin);
     Vec3 centre = peak_;
@@ -248,9 +285,9 @@ class Quadrature {
   }
 
   // Largest azimuth difference from the peak (at polar angle theta_p) of the directions within
-  // `radius` of it whose polar angle is in [t0, t1]; pi when the cap reaches a pole.
+  // `radius` of it whose polar angle is in [t0, t1]; pi in a band that reaches a pole inside the
+  // cap. Caps containing a pole (every hemisphere) are still partial in the rows away from it.
   static double half_width(double theta_p, double radius, double t0, double t1) {
-    if (theta_p - radius <= 0 || theta_p + radius >= kPi) return kPi;
     auto at = [&](double t) {
       const double s = std::sin(t) * std::sin(theta_p);
       if (s <= 0) return kPi;
@@ -276,25 +313,25 @@ class Quadrature {
     const double margin = env_.node_angle(0);
     if (!in_window(t.centroid, margin, 4 * reach_)) return Rgb::Zero();
     if (hot_split_ == 1 || !in_window(t.centroid, margin, 2 * reach_))
-      return value(t.centroid) * (t.radiance * t.solid_angle);
+      return t.radiance * (value(t.centroid) * t.solid_angle);
     const int w = env_.width(0), h = env_.height(0), n = hot_split_;
     const double theta = kPi * (t.y + 0.5) / h, phi = 2 * kPi * ((t.x + 0.5) / w - 0.5);
     const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
     const Vec3 centre(-st * sp, ct, st * cp), e_theta(-ct * sp, -st, ct * cp), e_phi(-cp, 0, -sp);
     const double d_theta = kPi / h / n, d_phi = 2 * kPi / w * st / n;
-    Rgb sum = Rgb::Zero();
+    Value sum = zero<Value>();
     for (int j = 0; j < n; ++j) {
       const Vec3 row = centre + ((j + 0.5) - 0.5 * n) * d_theta * e_theta;
       for (int i = 0; i < n; ++i)
         sum += value((row + ((i + 0.5) - 0.5 * n) * d_phi * e_phi).normalized());
     }
-    return sum * t.radiance * (t.solid_angle / (n * n));
+    return t.radiance * (sum * (t.solid_angle / (n * n)));
   }
 
   const EnvPyramid& env_;
   const Kernel& kernel_;
   Vec3 peak_, major_, minor_, horizon_;
-  double major_width_, minor_width_, reach_, node_angle_;
+  double major_width_, minor_width_, inv_major_, inv_minor_, reach_, node_angle_;
   int level_, split_, hot_split_, grid_w_, grid_h_;
   Visible visible_;
 };
