@@ -7,9 +7,12 @@ namespace brdfnav::nav {
 
 namespace {
 
-// Halvings of a segment: far below float resolution of the embedding, and a fixed count keeps
-// the answer independent of anything but the inputs.
-constexpr int kBisections = 64;
+// The crossing is refined until the distance is within this fraction of the radius: far below
+// the embedding's own accuracy (about 1e-2), and above the single-precision noise of embedded
+// distances (about 1e-7 of an embedding's norm, up to 1e-5 of a small radius). The iteration
+// bound keeps the answer a function of the inputs alone.
+constexpr double kRadiusTolerance = 1e-4;
+constexpr int kMaxRefinements = 60;
 
 // One parameter a lobe path moves, in the parameter's own scale (log or linear).
 struct MovingAxis {
@@ -78,27 +81,41 @@ Path scale_path(const Material& m, const ParamGrid& grid, const std::vector<std:
 
 Hit walk_to_sphere(const ModelEmbedding& embedding, const Eigen::VectorXf& centre, double radius,
                    const Path& path) {
-  const auto distance = [&](double s) {
-    return Embedding::distance(embedding.embed(path.material(s)), centre);
+  // f(s) = distance - radius: negative inside the sphere.
+  const auto f = [&](double s) {
+    return Embedding::distance(embedding.embed(path.material(s)), centre) - radius;
   };
+  double lo = 0, f_lo = -radius;  // the walk starts at the centre
   for (std::size_t i = 1; i < path.breaks.size(); ++i) {
-    double lo = path.breaks[i - 1], hi = path.breaks[i];
-    double hi_distance = distance(hi);
-    if (hi_distance < radius) continue;
-    for (int k = 0; k < kBisections; ++k) {
-      const double mid = 0.5 * (lo + hi);
-      if (mid <= lo || mid >= hi) break;
-      const double d = distance(mid);
-      if (d < radius) {
-        lo = mid;
+    double hi = path.breaks[i], f_hi = f(hi);
+    if (f_hi < 0) {
+      lo = hi, f_lo = f_hi;
+      continue;
+    }
+    // Regula falsi, Illinois variant: when the same end survives twice in a row its value is
+    // halved for the interpolation, so both ends close in superlinearly (plain regula falsi can
+    // stall on one side); a few embeddings instead of the 50-odd of bisection. w_lo and w_hi are
+    // those weighted values, f_hi the true one.
+    double w_lo = f_lo, w_hi = f_hi;
+    int last = 0;  // which end moved last: -1 lo, +1 hi
+    for (int k = 0; k < kMaxRefinements && f_hi > kRadiusTolerance * radius; ++k) {
+      const double s = hi - w_hi * (hi - lo) / (w_hi - w_lo);
+      if (!(s > lo && s < hi)) break;  // the segment cannot shrink any further
+      const double f_s = f(s);
+      if (f_s < 0) {
+        lo = s, w_lo = f_s;
+        if (last == -1) w_hi *= 0.5;
+        last = -1;
       } else {
-        hi = mid, hi_distance = d;
+        hi = s, f_hi = w_hi = f_s;
+        if (last == 1) w_lo *= 0.5;
+        last = 1;
       }
     }
-    return {path.material(hi), hi_distance, true};
+    return {path.material(hi), f_hi + radius, true};
   }
   const double end = path.breaks.back();
-  return {path.material(end), distance(end), false};
+  return {path.material(end), f(end) + radius, false};
 }
 
 std::vector<Path> lobe_paths(const Material& m, const ParamGrid& grid, bool ward_isotropic) {

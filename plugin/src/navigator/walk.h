@@ -29,10 +29,11 @@ struct Hit {
   bool reached;     // false: the whole path stays inside the sphere, `material` is its end
 };
 
-// Walks `path` segment by segment and bisects, on the embedded distance, inside the first
-// segment whose end is at least `radius` from `centre`. Exact for one parameter: its embedding
-// is linear inside a grid cell, so the squared distance is convex there and a crossing shows at
-// the segment's end.
+// Walks `path` segment by segment and finds the crossing of the sphere, on the embedded
+// distance, inside the first segment whose end is at least `radius` from `centre`; the hit is
+// the crossing's outer side (distance >= radius, within 1e-4 of it). Along one parameter the
+// embedding is a cubic inside a grid cell, smooth and nearly straight at the scale of a cell, so
+// a path that leaves the sphere inside a segment is still outside at its end.
 Hit walk_to_sphere(const ModelEmbedding& embedding, const Eigen::VectorXf& centre, double radius,
                    const Path& path);
 
