@@ -309,7 +309,7 @@ class Quadrature {
   // order in the texel's size) and carries an equal share of its solid angle.
   Rgb hot_sum(const EnvPyramid::HotTexel& t) const {
     // Beyond four times the window even a lamp 10^5 times the map's mean adds nothing: the
-    // lobes fall at least like Gaussians of their width there (exp(-128)).
+    // lobes fall at least like Gaussians of their width there (exp(-98) at the default reach).
     const double margin = env_.node_angle(0);
     if (!in_window(t.centroid, margin, 4 * reach_)) return Rgb::Zero();
     if (hot_split_ == 1 || !in_window(t.centroid, margin, 2 * reach_))

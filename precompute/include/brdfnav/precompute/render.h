@@ -23,12 +23,12 @@ namespace brdfnav {
 // Knobs of the quadrature (docs/RENDERER.md). The defaults meet the accuracy target: the error is
 // at most a tenth of the change a 10% parameter step makes. finer(4) is the reference.
 struct RenderQuality {
-  double texels_per_width = 1.25;     // quadrature nodes per lobe width (its narrowest sigma)
-  double hot_texels_per_width = 5;    // ... for the pieces of the hot texels (lamps)
-  double max_node = 0.15;             // radians: the largest node, whatever the lobe's width
-  double reach = 4;                   // the window around the lobe's peak, in lobe widths
-  int max_split = 16;                 // a texel is cut into at most max_split^2 pieces
-  int max_nodes = 16384;              // per pixel and term: beyond, nodes are made coarser
+  double texels_per_width = 1.25;   // quadrature nodes per lobe width (its narrowest sigma)
+  double hot_texels_per_width = 5;  // ... for the pieces of the hot texels (lamps)
+  double max_node = 0.2;            // radians: the largest node, whatever the lobe's width
+  double reach = 3.5;               // the window around the lobe's peak, in lobe widths
+  int max_split = 16;               // a texel is cut into at most max_split^2 pieces
+  int max_nodes = 16384;            // per pixel and term: beyond, nodes are made coarser
 
   // The same quadrature `factor` times finer in angle, over a wider window.
   RenderQuality finer(double factor) const;
