@@ -2,6 +2,7 @@
 // OCIO, and the resident memory with a database open (issue #5's targets), on this machine.
 #include "bench_navigator.h"
 
+#include <brdfnav/core/statistics.h>
 #include <brdfnav/navigator.h>
 #include <brdfnav/ocio/color_pipeline.h>
 #include <brdfnav/thumbnails.h>
@@ -59,10 +60,8 @@ namespace {
 struct Percentiles {
   double median, p99, max;
 };
-Percentiles percentiles(std::vector<double> ms) {
-  std::sort(ms.begin(), ms.end());
-  auto at = [&](double q) { return ms[std::min(ms.size() - 1, std::size_t(q * ms.size()))]; };
-  return {at(0.5), at(0.99), ms.back()};
+Percentiles percentiles(const std::vector<double>& ms) {
+  return {quantile(ms, 0.5), quantile(ms, 0.99), quantile(ms, 1.0)};
 }
 
 }  // namespace

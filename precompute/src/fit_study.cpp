@@ -2,6 +2,8 @@
 
 #include "levenberg_marquardt.h"
 
+#include <brdfnav/core/statistics.h>
+
 #include <algorithm>
 #include <limits>
 #include <random>
@@ -106,11 +108,6 @@ std::vector<Eigen::VectorXd> ranked_starts(const EmbeddedFit& fit, const ParamGr
   return starts;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
 }  // namespace
 
 ImageFit fit_in_embedding(const ModelEmbedding& model, const Eigen::VectorXf& target,
@@ -162,14 +159,13 @@ FitStudy fit_study(const Database& db, int per_pair, std::uint32_t seed) {
         between.push_back(Embedding::distance(by_brdf, b->embed(fit.material)));
         if (image.back() > 0) ratios.push_back(brdf.back() / image.back());
       }
-      study.pairs.push_back(
-          {from.id, to.id, per_pair, median(brdf), median(image), median(between)});
+      study.pairs.push_back({from.id, to.id, per_pair, quantile(brdf, 0.5), quantile(image, 0.5),
+                             quantile(between, 0.5)});
     }
   }
-  std::sort(ratios.begin(), ratios.end());
   if (!ratios.empty()) {
-    study.ratio_median = ratios[ratios.size() / 2];
-    study.ratio_p90 = ratios[std::min(ratios.size() - 1, ratios.size() * 9 / 10)];
+    study.ratio_median = quantile(ratios, 0.5);
+    study.ratio_p90 = quantile(ratios, 0.9);
   }
   return study;
 }

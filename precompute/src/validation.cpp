@@ -1,6 +1,7 @@
 #include <brdfnav/precompute/validation.h>
 
 #include <brdfnav/core/cielab.h>
+#include <brdfnav/core/statistics.h>
 #include <brdfnav/precompute/fit.h>
 
 #include <algorithm>
@@ -41,15 +42,6 @@ double weighted_square(const FitQuadrature& q, const Closure& f, const Closure* 
 
 // Dense enough that the Ward lobes of the figures (alpha >= 0.01) are resolved at every wo.
 constexpr int kBrdfQuadratureWo = 32, kBrdfQuadratureWi = 256;
-
-// The q-quantile (0..1) by linear interpolation between order statistics.
-double quantile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  const double pos = q * double(v.size() - 1);
-  const std::size_t i = static_cast<std::size_t>(pos);
-  if (i + 1 >= v.size()) return v.back();
-  return v[i] + (pos - double(i)) * (v[i + 1] - v[i]);
-}
 
 std::vector<Image> render_all(Renderer& renderer, const std::vector<Material>& samples) {
   std::vector<Image> images;

@@ -6,11 +6,11 @@
 // profile's.
 #include "navigator_fixture.h"
 
+#include <brdfnav/core/statistics.h>
 #include <brdfnav/navigator.h>
 #include <brdfnav/precompute/render.h>
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -20,12 +20,6 @@ namespace {
 std::filesystem::path database_dir() {
   if (const char* dir = std::getenv("BRDFNAV_TEST_NAV_DB")) return dir;
   return test::NavigationDatabase::get().dir();
-}
-
-// |rendered / eps - 1| at quantile q.
-double quantile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5)];
 }
 
 TEST(NavigatorRendered, LobeNeighboursLookEpsAway) {
