@@ -5,6 +5,7 @@
 #include <brdfnav/core/closure.h>
 
 #include <type_traits>
+#include <utility>
 
 namespace brdfnav {
 
@@ -52,23 +53,42 @@ inline Rgb max0(const Rgb& k) {
 template <typename L>
 constexpr bool kGreyLobe = !std::is_same_v<L, He>;
 
+// A lobe seen from one wo: L::Bound where the lobe computes its wo terms once (He), else the
+// lobe and wo.
+template <typename L>
+struct AtWo {
+  const L& lobe;
+  Vec3 wo;
+  Rgb eval(const Vec3& wi) const { return lobe.eval(wi, wo); }
+};
+template <typename L>
+auto bind_wo(const L& lobe, const Vec3& wo) {
+  if constexpr (requires { lobe.bind(wo); })
+    return lobe.bind(wo);
+  else
+    return AtWo<L>{lobe, wo};
+}
+
 // rho_s = 1 lobe of a closure times the cosine, in the frame of one pixel: a double for grey
 // lobes, an Rgb otherwise.
 template <typename L>
 struct LobeKernel {
   using Value = std::conditional_t<kGreyLobe<L>, double, Rgb>;
-  const L& lobe;
-  Frame frame;
-  Vec3 wo;  // local
+  LobeKernel(const L& lobe, const Frame& frame, const Vec3& wo)
+      : lobe(bind_wo(lobe, wo)), frame(frame) {}
 
   Value value(const Vec3& wi_world) const {
     const Vec3 wi = frame.to_local(wi_world);
     if (wi.z() <= 0) return zero<Value>();
     if constexpr (kGreyLobe<L>)
-      return lobe.eval(wi, wo)[0] * wi.z();
+      return lobe.eval(wi)[0] * wi.z();
     else
-      return lobe.eval(wi, wo) * wi.z();
+      return lobe.eval(wi) * wi.z();
   }
+
+ private:
+  decltype(bind_wo(std::declval<const L&>(), Vec3())) lobe;
+  Frame frame;
 };
 
 // Lambert with rho_d = 1: cos / pi.

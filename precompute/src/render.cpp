@@ -157,7 +157,7 @@ struct Renderer::Impl {
     const Vec3 wo = frame.to_local(kViewDirection);
     if (wo.z() <= 0) return Rgb::Zero();
     const KernelShape shape = lobe_shape(any, wo).to_world(frame);
-    Rgb sum = integrate(LobeKernel<L>{lobe, frame, wo}, shape, p.normal, p, s);
+    Rgb sum = integrate(LobeKernel<L>(lobe, frame, wo), shape, p.normal, p, s);
     if constexpr (requires { lobe.mirror_weight(wo); }) {
       const Rgb weight = lobe.mirror_weight(wo);
       if ((weight > 0).any()) {
