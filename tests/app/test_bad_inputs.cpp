@@ -287,5 +287,29 @@ TEST_F(BadInputs, InlineSpecsAndDirections) {
   }
 }
 
+// Numeric options of the long-running commands are range-checked before any work starts: a
+// report directory or a database is never opened for a run that cannot be valid.
+TEST_F(BadInputs, NumericOptionsOutOfRange) {
+  const std::string report = file("report_never_written").string();
+  const struct {
+    std::string args, phrase;
+  } cases[] = {
+      {"validate --fit-samples 0 --out " + report, "--fit-samples: Value 0 not in range 1 to"},
+      {"validate --pairs 1 --out " + report, "--pairs: Value 1 not in range 2 to"},
+      {"validate --res 4 --out " + report, "--res: Value 4 not in range 8 to"},
+      {"bench load --db " + db().string() + " --threads 0", "--threads: Value 0 not in range"},
+      {"bench load --db " + db().string() + " --queries x", "--queries: Value x not in range"},
+      {"bench navigator --db " + db().string() + " --materials 0",
+       "--materials: Value 0 not in range"},
+      {"bench render --repeats 0", "--repeats"},
+      {"bench fits --per-model 0", "--per-model"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.args);
+    expect_rejected(run_cli(c.args), {c.phrase});
+  }
+  EXPECT_FALSE(fs::exists(report));
+}
+
 }  // namespace
 }  // namespace brdfnav::test
