@@ -22,6 +22,7 @@ struct BenchOptions {
   std::string model;  // empty: all
   int repeats = 3;
   bool accuracy = true;
+  bool anisotropic = false;
 };
 
 // Mean wall-clock milliseconds of one specular image of the setting.
@@ -45,12 +46,11 @@ void run_render_bench(const BenchOptions& o) {
               scene.description().c_str());
   std::printf("| model | setting | ms per image | accuracy ratio per parameter |\n");
   std::printf("|---|---|---|---|\n");
-  std::map<ModelId, double> total_ms;
-  for (const AccuracySetting& s : accuracy_settings()) {
+  std::map<ModelId, std::pair<double, int>> total_ms;  // ms, images
+  auto row = [&](const AccuracySetting& s) {
     const std::string name(model_info(s.model).name);
-    if (!o.model.empty() && o.model != name) continue;
+    if (!o.model.empty() && o.model != name) return 0.0;
     const double ms = time_image(renderer, s, o.repeats);
-    total_ms[s.model] += ms / 3;
     std::string ratios;
     if (o.accuracy)
       for (const AccuracyResult& r : measure_accuracy(renderer, reference, s)) {
@@ -61,10 +61,20 @@ void run_render_bench(const BenchOptions& o) {
       }
     std::printf("| %s | %s | %.1f | %s |\n", name.c_str(), s.name.c_str(), ms, ratios.c_str());
     std::fflush(stdout);
+    return ms;
+  };
+  for (const AccuracySetting& s : accuracy_settings()) {
+    const double ms = row(s);
+    if (ms > 0) total_ms[s.model].first += ms, ++total_ms[s.model].second;
   }
-  std::printf("\n| model | mean ms per image |\n|---|---|\n");
-  for (const auto& [model, ms] : total_ms)
-    std::printf("| %s | %.1f |\n", std::string(model_info(model).name).c_str(), ms);
+  if (o.anisotropic) {
+    for (const AccuracySetting& s : anisotropic_settings()) row(s);
+    row(sliver_setting());
+  }
+  std::printf("\n| model | mean ms per image (smooth, medium, rough) |\n|---|---|\n");
+  for (const auto& [model, sum] : total_ms)
+    std::printf("| %s | %.1f |\n", std::string(model_info(model).name).c_str(),
+                sum.first / sum.second);
 }
 
 // Fits of grid nodes of every model by every other model (default FitOptions, one thread): mean
@@ -113,6 +123,8 @@ void add_bench_commands(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   render->add_flag("!--no-accuracy", o->accuracy, "Skip the accuracy ratios (timing only)");
+  render->add_flag("--anisotropic", o->anisotropic,
+                   "Also the strongly anisotropic Ward settings (slow: their references are)");
   render->callback([o] {
     if (!o->model.empty() && !find_model(o->model))
       throw std::runtime_error("--model: unknown model '" + o->model + "'");

@@ -46,8 +46,12 @@ KernelShape shape(const BlinnPhong& l, const Vec3& wo) {
 }
 
 KernelShape shape(const Ward& l, const Vec3& wo) {
-  // exp(-(tan(theta_h) cos(phi) / alpha_x)^2 - ...): slope deviations alpha / sqrt(2).
-  return half_vector_shape(wo, l.alpha_x / std::sqrt(2.0), l.alpha_y / std::sqrt(2.0));
+  // exp(-(tan(theta_h) cos(phi) / alpha_x)^2 - ...): slope deviations alpha / sqrt(2). The
+  // window follows the slopes: an anisotropic Ward lobe bends far from its peak's ellipse.
+  const double sx = l.alpha_x / std::sqrt(2.0), sy = l.alpha_y / std::sqrt(2.0);
+  KernelShape s = half_vector_shape(wo, sx, sy);
+  s.slopes = KernelShape::Slopes{Frame{}, wo, sx, sy};
+  return s;
 }
 
 KernelShape shape(const CookTorrance& l, const Vec3& wo) {

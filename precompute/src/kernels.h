@@ -4,6 +4,7 @@
 
 #include <brdfnav/core/closure.h>
 
+#include <optional>
 #include <type_traits>
 #include <utility>
 
@@ -19,11 +20,23 @@ struct KernelShape {
   double major_width;
   double minor_width;
   Rgb channel_scale = Rgb::Ones();
+  // For a lobe over half vectors given as slope deviations (sx, sy) along the frame's x and y:
+  // the quadrature's window is then the ellipse of `reach` deviations in slope space, which
+  // follows the lobe where it bends away from the ellipse around its peak (far along the long
+  // axis of an anisotropic lobe), instead of that ellipse.
+  struct Slopes {
+    Frame frame;  // local to world
+    Vec3 wo;      // local
+    double sx, sy;
+  };
+  std::optional<Slopes> slopes;
 
   static KernelShape isotropic(const Vec3& peak, double width);
   KernelShape to_world(const Frame& frame) const {
-    return {frame.from_local(peak), frame.from_local(major), major_width, minor_width,
-            channel_scale};
+    KernelShape s{frame.from_local(peak), frame.from_local(major), major_width, minor_width,
+                  channel_scale, slopes};
+    if (s.slopes) s.slopes->frame = frame;
+    return s;
   }
 };
 

@@ -65,6 +65,9 @@ class Quadrature {
     minor_width_ = shape.minor_width * wide;
     inv_major_ = 1 / major_width_, inv_minor_ = 1 / minor_width_;
     reach_ = quality.reach;
+    slopes_ = shape.slopes;
+    if (slopes_) slopes_->sx *= wide, slopes_->sy *= wide;
+    extent_ = slopes_ ? outline_extent() : reach_ * major_width_;
     // Broad kernels too: the horizon cuts every lobe, and the second differences only correct
     // what is smooth at the scale of a node.
     const double step = coarsened_step(
@@ -93,7 +96,7 @@ class Quadrature {
   // anisotropic lobes (Ward 0.5 x 0.005) would otherwise enumerate a hemisphere at the step of
   // their narrow side. Such a lobe is then integrated a little blurred across, in bounded time.
   double coarsened_step(double step, const RenderQuality& quality) const {
-    const double a = reach_ * major_width_, b = reach_ * minor_width_;
+    const double a = extent_, b = reach_ * minor_width_;
     const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
     const bool ellipse = a <= 1.0 && theta_p - 1.2 * a > 0 && theta_p + 1.2 * a < kPi;
     const double widest = horizon_.squaredNorm() > 0 ? kPi / 2 : kPi;
@@ -106,8 +109,32 @@ class Quadrature {
     return step;
   }
 
+  // Point k of kVertices on the outline of the window in slope space, `radius` deviations out,
+  // as an incident direction (world): wo reflected about that half vector.
+  Vec3 slope_outline(int k, double radius) const {
+    const double t = 2 * kPi * k / kOutline;
+    const Vec3 h = Vec3(radius * slopes_->sx * std::cos(t), radius * slopes_->sy * std::sin(t), 1)
+                       .normalized();
+    return slopes_->frame.from_local(reflect(slopes_->wo, h));
+  }
+  // The largest angle between the peak and the outline of the slope window.
+  double outline_extent() const {
+    double extent = 0;
+    for (int k = 0; k < kOutline; ++k)
+      extent =
+          std::max(extent, std::acos(std::clamp(slope_outline(k, reach_).dot(peak_), -1.0, 1.0)));
+    return extent;
+  }
+
   // Whether a direction within `margin` radians of `w` can be inside the window.
   bool in_window(const Vec3& w, double margin, double reach) const {
+    if (slopes_) {
+      const Vec3 h = slopes_->frame.to_local(w) + slopes_->wo;
+      if (h.z() <= 0) return false;
+      const double u = h.x() / (h.z() * slopes_->sx), v = h.y() / (h.z() * slopes_->sy);
+      const double r = reach + margin * inv_minor_;
+      return u * u + v * v <= r * r;
+    }
     const Vec3 offset = w - peak_;
     if (offset.squaredNorm() > 2 && reach * major_width_ < kPi / 2) return false;  // far side
     const double a = std::max(0.0, std::abs(offset.dot(major_)) - margin) * inv_major_;
@@ -218,7 +245,7 @@ class Quadrature {
   // Spans of the spherical cap of the window's major radius (any window, but loose for narrow
   // ellipses), or of the hemisphere above the horizon when that is smaller.
   void cap_spans(double margin, int& y0, std::vector<std::pair<int, int>>& spans) const {
-    double radius = std::min(kPi, reach_ * major_width_ + margin);
+    double radius = std::min(kPi, extent_ + margin);
     Vec3 centre = peak_;
     if (horizon_.squaredNorm() > 0 && radius > kPi / 2 + 2 * margin)
       radius = kPi / 2 + 2 * margin, centre = horizon_;
@@ -243,10 +270,11 @@ class Quadrature {
   // the peak's), scan-converted row by row. False when the window is too wide or reaches a pole,
   // where lat-long coordinates fold: cap_spans() then.
   bool ellipse_spans(double margin, int& y0, std::vector<std::pair<int, int>>& spans) const {
-    constexpr int kVertices = 32;
+    constexpr int kVertices = kOutline;
     const double a = reach_ * major_width_ + margin, b = reach_ * minor_width_ + margin;
+    const double extent = extent_ + margin;
     const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
-    if (a > 1.0 || theta_p - 1.2 * a <= 0 || theta_p + 1.2 * a >= kPi) return false;
+    if (extent > 1.0 || theta_p - 1.2 * extent <= 0 || theta_p + 1.2 * extent >= kPi) return false;
     const double x_p = EnvMap::texcoord(peak_).x() * grid_w_;
     // Circumscribed: the polygon's edges stay outside the ellipse.
     const double grow = 1 / std::cos(kPi / kVertices);
@@ -254,7 +282,8 @@ class Quadrature {
     double y_min = grid_h_, y_max = 0;
     for (int k = 0; k < kVertices; ++k) {
       const double t = 2 * kPi * k / kVertices;
-      const Vec3 d = peak_ + grow * (a * std::cos(t) * major_ + b * std::sin(t) * minor_);
+      const Vec3 d = slopes_ ? slope_outline(k, grow * (reach_ + margin * inv_minor_))
+                             : peak_ + grow * (a * std::cos(t) * major_ + b * std::sin(t) * minor_);
       const Vec2 uv = EnvMap::texcoord(d);
       double x = uv.x() * grid_w_ - x_p;
       x -= grid_w_ * std::round(x / grid_w_);
@@ -330,7 +359,10 @@ class Quadrature {
 
   const EnvPyramid& env_;
   const Kernel& kernel_;
+  static constexpr int kOutline = 32;  // vertices of the window's outline
   Vec3 peak_, major_, minor_, horizon_;
+  std::optional<KernelShape::Slopes> slopes_;
+  double extent_;  // largest angle between the peak and the window's edge
   double major_width_, minor_width_, inv_major_, inv_minor_, reach_, node_angle_;
   int level_, split_, hot_split_, grid_w_, grid_h_;
   Visible visible_;

@@ -26,6 +26,19 @@ const std::vector<AccuracySetting>& accuracy_settings() {
   return settings;
 }
 
+const std::vector<AccuracySetting>& anisotropic_settings() {
+  static const std::vector<AccuracySetting> settings{
+      {ModelId::ward, "0.2 x 0.02", {0.2, 0.02}},
+      {ModelId::ward, "0.05 x 0.5", {0.05, 0.5}},
+  };
+  return settings;
+}
+
+const AccuracySetting& sliver_setting() {
+  static const AccuracySetting setting{ModelId::ward, "0.5 x 0.005", {0.5, 0.005}};
+  return setting;
+}
+
 RenderQuality reference_quality(const RenderQuality& quality) {
   return quality.finer(4);
 }

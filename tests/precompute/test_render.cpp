@@ -164,6 +164,20 @@ TEST_P(Accuracy, ErrorIsATenthOfATenPercentStep) {
   }
 }
 
+// The window that follows the lobe's slopes: moderately anisotropic Ward lobes were 0.25-0.38
+// with a window around the peak alone.
+TEST(AnisotropicAccuracy, WardLobesThatBend) {
+  const Scene sphere = Scene::sphere();
+  Renderer renderer(interior(), sphere, 16);
+  RenderOptions o;
+  o.quality = reference_quality(renderer.options().quality);
+  Renderer reference(interior(), sphere, 16, o);
+  for (const AccuracySetting& s : anisotropic_settings())
+    for (const AccuracyResult& r : measure_accuracy(renderer, reference, s))
+      EXPECT_LE(r.ratio(), 0.1) << s.name << " " << r.param << ": error " << r.error << ", step "
+                                << r.step;
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryModel, Accuracy,
                          ::testing::Values(ModelId::blinn_phong, ModelId::ward,
                                            ModelId::cook_torrance, ModelId::lafortune, ModelId::he),
