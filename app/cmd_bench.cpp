@@ -47,9 +47,11 @@ void run_render_bench(const BenchOptions& o) {
   std::printf("| model | setting | ms per image | accuracy ratio per parameter |\n");
   std::printf("|---|---|---|---|\n");
   std::map<ModelId, std::pair<double, int>> total_ms;  // ms, images
+  auto wanted = [&](const AccuracySetting& s) {
+    return o.model.empty() || o.model == model_info(s.model).name;
+  };
   auto row = [&](const AccuracySetting& s) {
     const std::string name(model_info(s.model).name);
-    if (!o.model.empty() && o.model != name) return 0.0;
     const double ms = time_image(renderer, s, o.repeats);
     std::string ratios;
     if (o.accuracy)
@@ -64,12 +66,14 @@ void run_render_bench(const BenchOptions& o) {
     return ms;
   };
   for (const AccuracySetting& s : accuracy_settings()) {
+    if (!wanted(s)) continue;
     const double ms = row(s);
-    if (ms > 0) total_ms[s.model].first += ms, ++total_ms[s.model].second;
+    total_ms[s.model].first += ms, ++total_ms[s.model].second;
   }
   if (o.anisotropic) {
-    for (const AccuracySetting& s : anisotropic_settings()) row(s);
-    row(sliver_setting());
+    for (const AccuracySetting& s : anisotropic_settings())
+      if (wanted(s)) row(s);
+    if (wanted(sliver_setting())) row(sliver_setting());
   }
   std::printf("\n| model | mean ms per image (smooth, medium, rough) |\n|---|---|\n");
   for (const auto& [model, sum] : total_ms)

@@ -109,7 +109,7 @@ class Quadrature {
     return step;
   }
 
-  // Point k of kVertices on the outline of the window in slope space, `radius` deviations out,
+  // Point k of kOutline on the outline of the window in slope space, `radius` deviations out,
   // as an incident direction (world): wo reflected about that half vector.
   Vec3 slope_outline(int k, double radius) const {
     const double t = 2 * kPi * k / kOutline;
@@ -270,18 +270,17 @@ class Quadrature {
   // the peak's), scan-converted row by row. False when the window is too wide or reaches a pole,
   // where lat-long coordinates fold: cap_spans() then.
   bool ellipse_spans(double margin, int& y0, std::vector<std::pair<int, int>>& spans) const {
-    constexpr int kVertices = kOutline;
     const double a = reach_ * major_width_ + margin, b = reach_ * minor_width_ + margin;
     const double extent = extent_ + margin;
     const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
     if (extent > 1.0 || theta_p - 1.2 * extent <= 0 || theta_p + 1.2 * extent >= kPi) return false;
     const double x_p = EnvMap::texcoord(peak_).x() * grid_w_;
     // Circumscribed: the polygon's edges stay outside the ellipse.
-    const double grow = 1 / std::cos(kPi / kVertices);
-    std::array<Vec2, kVertices + 1> p;
+    const double grow = 1 / std::cos(kPi / kOutline);
+    std::array<Vec2, kOutline + 1> p;
     double y_min = grid_h_, y_max = 0;
-    for (int k = 0; k < kVertices; ++k) {
-      const double t = 2 * kPi * k / kVertices;
+    for (int k = 0; k < kOutline; ++k) {
+      const double t = 2 * kPi * k / kOutline;
       const Vec3 d = slopes_ ? slope_outline(k, grow * (reach_ + margin * inv_minor_))
                              : peak_ + grow * (a * std::cos(t) * major_ + b * std::sin(t) * minor_);
       const Vec2 uv = EnvMap::texcoord(d);
@@ -290,12 +289,12 @@ class Quadrature {
       p[k] = Vec2(x_p + x, uv.y() * grid_h_);
       y_min = std::min(y_min, p[k].y()), y_max = std::max(y_max, p[k].y());
     }
-    p[kVertices] = p[0];
+    p[kOutline] = p[0];
     y0 = std::max(0, static_cast<int>(std::floor(y_min)));
     const int y1 = std::min(grid_h_ - 1, static_cast<int>(std::floor(y_max)));
     for (int y = y0; y <= y1; ++y) {
       double lo = 1e300, hi = -1e300;
-      for (int k = 0; k < kVertices; ++k) {
+      for (int k = 0; k < kOutline; ++k) {
         const Vec2 &e0 = p[k], &e1 = p[k + 1];
         const double t0 = std::max<double>(y, std::min(e0.y(), e1.y()));
         const double t1 = std::min(y + 1.0, std::max(e0.y(), e1.y()));

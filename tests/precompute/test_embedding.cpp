@@ -1,8 +1,8 @@
-#include <brdfnav/core/statistics.h>
 #include <brdfnav/precompute/embedding.h>
 #include <brdfnav/precompute/render.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 namespace brdfnav {
@@ -97,7 +97,8 @@ TEST(Embedding, InterpolatesBetweenNodes) {
     const double embedded = Embedding::distance(f.of(a.model).embed(a), f.of(b.model).embed(b));
     errors.push_back(std::abs(embedded - exact) / exact);
   }
-  EXPECT_LT(quantile(errors, 0.5), 0.05);
+  // The upper of the two middle errors of the eight is below 5%: five of them are.
+  EXPECT_GE(std::count_if(errors.begin(), errors.end(), [](double e) { return e < 0.05; }), 5);
 }
 
 TEST(Embedding, RejectsImagesWithAnotherMask) {
