@@ -7,15 +7,21 @@ namespace brdfnav {
 KernelShape KernelShape::isotropic(const Vec3& peak, double width) {
   const Vec3 other = std::abs(peak.x()) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
   const Vec3 major = (other - other.dot(peak) * peak).normalized();
-  return {peak, major, width, width};
+  return {peak, major, width, width, width};
 }
 
 namespace {
 
 constexpr double kMaxWidth = 1.0;  // radians; broader lobes are all "broad"
-// Reflection squeezes a lobe across the plane of incidence by cos(theta_o); below this cosine
-// the squeeze is not followed further (the few silhouette pixels would cost too much).
+// Reflection squeezes a lobe across the plane of incidence by 2 (wo . h): 2 cos(theta_o) at its
+// peak. Below this cosine the window does not follow the squeeze (it would cut rough lobes, for
+// which the first-order picture fails).
 constexpr double kMinCos = 0.25;
+// The nodes follow it further, to 2 (cos(theta_o) + s), the squeeze where the half vector leans
+// one slope deviation s toward wo (leaning away sends wi below the horizon): seen at grazing
+// angles a lobe is a wedge, as thin as a line at the horizon, across which nodes spaced for the
+// unsqueezed lobe alias. At 320 x 320 the outermost pixels of Cook-Torrance m = 0.015 were 40% too
+// dark, and of m = 0.12 up to 60% too bright.
 
 // A lobe over half vectors whose slopes (h.x/h.z, h.y/h.z) have covariance diag(sx^2, sy^2) in
 // the local frame, seen from wo. To first order around the mirror direction, reflection maps a
@@ -23,20 +29,28 @@ constexpr double kMinCos = 0.25;
 // (2 du, 2 cos_o dv), along e_in = (cos_o cos_phi, cos_o sin_phi, sin_o) and
 // e_across = (-sin_phi, cos_phi, 0).
 KernelShape half_vector_shape(const Vec3& wo, double sx, double sy) {
-  const double sin_o = std::hypot(wo.x(), wo.y()), cos_o = std::max(wo.z(), kMinCos);
+  const double sin_o = std::hypot(wo.x(), wo.y());
   const double cp = sin_o > 1e-9 ? wo.x() / sin_o : 1.0, sp = sin_o > 1e-9 ? wo.y() / sin_o : 0.0;
   Eigen::Matrix2d rot;  // local (x, y) -> (in plane, across)
   rot << cp, sp, -sp, cp;
-  const Eigen::Matrix2d jacobian = Eigen::Vector2d(2, 2 * cos_o).asDiagonal();
-  const Eigen::Matrix2d cov = jacobian * rot * Eigen::Vector2d(sx * sx, sy * sy).asDiagonal() *
-                              rot.transpose() * jacobian;
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);  // ascending eigenvalues
+  const Eigen::Matrix2d slopes =
+      rot * Eigen::Vector2d(sx * sx, sy * sy).asDiagonal() * rot.transpose();
+  auto incident = [&](double cos_o) {  // covariance of the incident offsets (in plane, across)
+    const Eigen::Matrix2d jacobian = Eigen::Vector2d(2, 2 * cos_o).asDiagonal();
+    return Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(jacobian * slopes * jacobian);
+  };
+  const double cos_window = std::max(wo.z(), kMinCos);
+  const double cos_nodes = std::min(cos_window, std::max(wo.z(), 0.0) + std::max(sx, sy));
+  const auto eig = incident(cos_window);  // ascending eigenvalues
   const Eigen::Vector2d axis = eig.eigenvectors().col(1);
   const Vec3 e_in(wo.z() * cp, wo.z() * sp, sin_o), e_across(-sp, cp, 0);
   const Vec3 mirror(-wo.x(), -wo.y(), wo.z());
-  return {mirror, (axis[0] * e_in + axis[1] * e_across).normalized(),
-          std::min(kMaxWidth, std::sqrt(eig.eigenvalues()[1])),
-          std::min(kMaxWidth, std::sqrt(std::max(eig.eigenvalues()[0], 0.0)))};
+  auto width = [](double variance) {
+    return std::min(kMaxWidth, std::sqrt(std::max(variance, 0.0)));
+  };
+  const double minor = width(eig.eigenvalues()[0]);
+  return {mirror, (axis[0] * e_in + axis[1] * e_across).normalized(), width(eig.eigenvalues()[1]),
+          minor, std::min(minor, width(incident(cos_nodes).eigenvalues()[0]))};
 }
 
 KernelShape shape(const BlinnPhong& l, const Vec3& wo) {

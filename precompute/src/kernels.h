@@ -12,13 +12,16 @@ namespace brdfnav {
 
 // Where a kernel is large: around `peak` (unit), roughly a Gaussian with angular standard
 // deviation `major_width` along the tangent `major` and `minor_width` across it, in its narrowest
-// channel; channel c is `channel_scale[c]` (>= 1) times wider. Only steers the quadrature: a
-// wrong shape costs time or accuracy, never what is summed.
+// channel; channel c is `channel_scale[c]` (>= 1) times wider. `node_width` (<= minor_width)
+// is the narrowest feature the nodes must resolve: less than minor_width where the lobe is
+// squeezed into a line at grazing angles. Only steers the quadrature: a wrong shape costs time
+// or accuracy, never what is summed.
 struct KernelShape {
   Vec3 peak;
   Vec3 major;
   double major_width;
   double minor_width;
+  double node_width;
   Rgb channel_scale = Rgb::Ones();
   // For a lobe over half vectors given as slope deviations (sx, sy) along the frame's x and y:
   // the quadrature's window is then the ellipse of `reach` deviations in slope space, which
@@ -29,12 +32,17 @@ struct KernelShape {
     Vec3 wo;      // local
     double sx, sy;
   };
-  std::optional<Slopes> slopes;
+  std::optional<Slopes> slopes = std::nullopt;
 
   static KernelShape isotropic(const Vec3& peak, double width);
   KernelShape to_world(const Frame& frame) const {
-    KernelShape s{frame.from_local(peak), frame.from_local(major), major_width, minor_width,
-                  channel_scale, slopes};
+    KernelShape s{frame.from_local(peak),
+                  frame.from_local(major),
+                  major_width,
+                  minor_width,
+                  node_width,
+                  channel_scale,
+                  slopes};
     if (s.slopes) s.slopes->frame = frame;
     return s;
   }

@@ -71,7 +71,7 @@ class Quadrature {
     // Broad kernels too: the horizon cuts every lobe, and the second differences only correct
     // what is smooth at the scale of a node.
     const double step = coarsened_step(
-        std::min(shape.minor_width / quality.texels_per_width, quality.max_node), quality);
+        std::min(shape.node_width / quality.texels_per_width, quality.max_node), quality);
     level_ = 0;
     while (level_ + 1 < env.level_count() && env.node_angle(level_ + 1) <= step) ++level_;
     auto pieces_for = [&](double piece) {
@@ -79,7 +79,7 @@ class Quadrature {
                         quality.max_split);
     };
     split_ = level_ > 0 ? 1 : pieces_for(step);
-    hot_split_ = pieces_for(shape.minor_width / quality.hot_texels_per_width);
+    hot_split_ = pieces_for(shape.node_width / quality.hot_texels_per_width);
     grid_w_ = env.width(level_) * split_;
     grid_h_ = env.height(level_) * split_;
     node_angle_ = kPi / grid_h_;

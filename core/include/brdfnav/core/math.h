@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross()
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -17,10 +18,14 @@ using Rgb = Eigen::Array3d;
 inline constexpr double kPi = std::numbers::pi;
 inline constexpr double kInvPi = 1.0 / std::numbers::pi;
 
-inline double safe_sqrt(double x) { return std::sqrt(std::max(x, 0.0)); }
+inline double safe_sqrt(double x) {
+  return std::sqrt(std::max(x, 0.0));
+}
 
 // Mirror of `w` about the unit vector `n` (both pointing away from the surface).
-inline Vec3 reflect(const Vec3& w, const Vec3& n) { return 2.0 * w.dot(n) * n - w; }
+inline Vec3 reflect(const Vec3& w, const Vec3& n) {
+  return 2.0 * w.dot(n) * n - w;
+}
 
 // Unit vector with polar angle given by (cos_theta, sin_theta) and azimuth phi around +z.
 inline Vec3 spherical_direction(double sin_theta, double cos_theta, double phi) {
@@ -28,7 +33,9 @@ inline Vec3 spherical_direction(double sin_theta, double cos_theta, double phi) 
 }
 
 // Rec. 709 / sRGB-primaries luminance; used only to weigh sampling strategies.
-inline double luminance(const Rgb& c) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; }
+inline double luminance(const Rgb& c) {
+  return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+}
 
 // Orthonormal frame (x, y, z) with z the shading normal; converts between world and local.
 struct Frame {
