@@ -195,7 +195,8 @@ TEST(Render, SharpLobesAtTheSilhouetteMatchABruteForceIntegral) {
   for (const Case& c : cases) {
     const Lobe lobe = make_lobe(c.model, c.params);
     const Rgb expected = brute_force_pixel(lobe, res, x, y, c.slope);
-    const float* got = renderer.specular(lobe).pixel(x, y);
+    const Image image = renderer.specular(lobe);
+    const float* got = image.pixel(x, y);
     for (int ch = 0; ch < 3; ++ch)
       EXPECT_NEAR(got[ch], expected[ch], c.tolerance * expected[ch]) << model_info(c.model).name;
   }
