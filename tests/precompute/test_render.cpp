@@ -160,7 +160,7 @@ Rgb brute_force_pixel(const Lobe& lobe, int res, int x, int y, double s) {
     for (int i = 0; i < n; ++i) {
       const Vec3 slope(-range + (i + 0.5) * cell, -range + (j + 0.5) * cell, 1);
       const Vec3 h = slope.normalized();
-      const Vec3 wi = 2 * wo.dot(h) * h - wo;
+      const Vec3 wi = reflect(wo, h);
       if (wi.z() <= 0) continue;
       const double d_omega_h = cell * cell / std::pow(slope.squaredNorm(), 1.5);
       const Vec2 t = EnvMap::texcoord(frame.from_local(wi));
