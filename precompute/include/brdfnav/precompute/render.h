@@ -61,6 +61,10 @@ class Renderer {
 
   // Lambert, rho_d = 1; alpha is coverage. Computed on first use, then cached.
   const Image& diffuse();
+  // What every image of the lobe's model shares, computed on first use, then cached: He's
+  // mirror lookups (the environment filtered around each pixel's mirror direction). specular()
+  // calls it; call it first to time specular() per image alone.
+  void prepare(const Lobe& lobe);
   // The lobe with rho_s = 1 (He's mirror term included).
   Image specular(const Lobe& lobe);
   // rho_d * diffuse() + rho_s * specular(lobe); validates the material (MaterialError).
