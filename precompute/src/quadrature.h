@@ -3,7 +3,8 @@
 //   + sum over the hot texels of radiance * integral of K over the texel.
 // The grid is the coarsest pyramid level whose nodes are at most 1 / texels_per_width of the
 // kernel's narrowest width, or level 0 with every texel cut into equal pieces for kernels
-// narrower than that. The window is the ellipse of `reach` widths around the kernel's peak.
+// narrower than that. The window is the ellipse of `reach` widths around the kernel's peak, or
+// of `reach` deviations in the half vector's slopes (Ward), enumerated as row segments.
 // Luminance-weighted centroids make the midpoint rule exact to first order; the second order is
 // corrected with the grid's own second differences of K (the corrected midpoint rule,
 // + (K_left + K_right + K_up + K_down - 4 K) / 24 per node). The hot texels (lamps), which lobes
@@ -13,6 +14,7 @@
 
 #include "env_pyramid.h"
 #include "kernels.h"
+#include "window_rows.h"
 
 #include <brdfnav/precompute/render.h>
 
@@ -30,10 +32,12 @@ struct AlwaysVisible {
 
 // Per-thread scratch space of the quadrature, reused from pixel to pixel.
 struct QuadratureScratch {
-  std::vector<std::pair<int, int>> spans;  // per window row: first and last (unwrapped) column
-  std::vector<std::size_t> offsets;        // per window row: index of its first node below
-  std::vector<double> grey;                // K per window node, for grey kernels
-  std::vector<Rgb> colour, power;          // K per window node for the others; power
+  std::vector<RowSegment> segments;    // the window's nodes, row by row, left to right
+  std::vector<std::size_t> offsets;    // per segment: index of its first node below
+  std::vector<std::size_t> row_first;  // per row from the first segment's: its first segment
+  std::vector<double> grey;            // K per window node, for grey kernels
+  std::vector<Rgb> colour, power;      // K per window node for the others; power
+  PolygonScratch polygon;
 
   template <typename V>
   std::vector<V>& kernel() {
@@ -42,11 +46,24 @@ struct QuadratureScratch {
     else
       return colour;
   }
+  template <typename V>
+  const std::vector<V>& kernel() const {
+    return const_cast<QuadratureScratch*>(this)->kernel<V>();
+  }
 };
 
 template <typename Kernel, typename Visible = AlwaysVisible>
 class Quadrature {
   using Value = typename Kernel::Value;
+  static constexpr int kOutline = 32;  // vertices of the window's outline
+  // ... of a slope window's: one per kSlopeVertexAngle of its extent (at most half of
+  // kSlopeOutline), more where they are over kOutlineEdge apart in (phi, theta): straight lines
+  // in lat-long between them then stay close to the true outline.
+  static constexpr int kSlopeOutline = 512;
+  static constexpr double kSlopeVertexAngle = 1.0 / 128;
+  static constexpr double kOutlineEdge = 0.05;
+  static constexpr double kPoleGap = 0.01;  // radians: nearer a pole, lat-long lines fold
+  static constexpr double kPolygonCost = 2048;
 
  public:
   // `horizon` is the normal of the half space the kernel lives in (K = 0 below it), or zero for
@@ -70,8 +87,11 @@ class Quadrature {
     extent_ = slopes_ ? outline_extent() : reach_ * major_width_;
     // Broad kernels too: the horizon cuts every lobe, and the second differences only correct
     // what is smooth at the scale of a node.
-    const double step = coarsened_step(
-        std::min(shape.node_width / quality.texels_per_width, quality.max_node), quality);
+    const double wanted_step =
+        std::min(shape.node_width / quality.texels_per_width, quality.max_node);
+    // The polygon costs about as much as kPolygonCost nodes: not worth it for a small cap.
+    if (slopes_ && cap_area(extent_) > kPolygonCost * wanted_step * wanted_step) slope_polygon();
+    const double step = coarsened_step(wanted_step, quality);
     level_ = 0;
     while (level_ + 1 < env.level_count() && env.node_angle(level_ + 1) <= step) ++level_;
     auto pieces_for = [&](double piece) {
@@ -99,20 +119,25 @@ class Quadrature {
     const double a = extent_, b = reach_ * minor_width_;
     const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
     const bool ellipse = a <= 1.0 && theta_p - 1.2 * a > 0 && theta_p + 1.2 * a < kPi;
-    const double widest = horizon_.squaredNorm() > 0 ? kPi / 2 : kPi;
     auto area = [&](double h) {  // what window_sum() enumerates, margins included
-      return ellipse ? kPi * (a + 3 * h) * (b + 3 * h)
-                     : 2 * kPi * (1 - std::cos(std::min(a + 3 * h, widest)));
+      if (outline_n_ > 0) return outline_area_ + 3 * h * outline_perimeter_;
+      if (ellipse) return kPi * (a + 3 * h) * (b + 3 * h);
+      return cap_area(a + 3 * h);
     };
     for (int i = 0; i < 4 && area(step) > quality.max_nodes * step * step; ++i)
       step = std::sqrt(area(step) / quality.max_nodes);
     return step;
   }
 
-  // Point k of kOutline on the outline of the window in slope space, `radius` deviations out,
+  // Solid angle of the cap of that radius around the peak, or of the hemisphere if smaller.
+  double cap_area(double radius) const {
+    const double widest = horizon_.squaredNorm() > 0 ? kPi / 2 : kPi;
+    return 2 * kPi * (1 - std::cos(std::min(radius, widest)));
+  }
+
+  // The point at angle t on the outline of the window in slope space, `radius` deviations out,
   // as an incident direction (world): wo reflected about that half vector.
-  Vec3 slope_outline(int k, double radius) const {
-    const double t = 2 * kPi * k / kOutline;
+  Vec3 slope_outline(double t, double radius) const {
     const Vec3 h = Vec3(radius * slopes_->sx * std::cos(t), radius * slopes_->sy * std::sin(t), 1)
                        .normalized();
     return slopes_->frame.from_local(reflect(slopes_->wo, h));
@@ -121,20 +146,23 @@ class Quadrature {
   double outline_extent() const {
     double extent = 0;
     for (int k = 0; k < kOutline; ++k)
-      extent =
-          std::max(extent, std::acos(std::clamp(slope_outline(k, reach_).dot(peak_), -1.0, 1.0)));
+      extent = std::max(
+          extent, std::acos(std::clamp(slope_outline(2 * kPi * k / kOutline, reach_).dot(peak_),
+                                       -1.0, 1.0)));
     return extent;
+  }
+
+  // Whether the half vector between w and wo is within `radius` deviations in slope space.
+  bool within_slopes(const Vec3& w, double radius) const {
+    const Vec3 h = slopes_->frame.to_local(w) + slopes_->wo;
+    if (h.z() <= 0) return false;
+    const double u = h.x() / (h.z() * slopes_->sx), v = h.y() / (h.z() * slopes_->sy);
+    return u * u + v * v <= radius * radius;
   }
 
   // Whether a direction within `margin` radians of `w` can be inside the window.
   bool in_window(const Vec3& w, double margin, double reach) const {
-    if (slopes_) {
-      const Vec3 h = slopes_->frame.to_local(w) + slopes_->wo;
-      if (h.z() <= 0) return false;
-      const double u = h.x() / (h.z() * slopes_->sx), v = h.y() / (h.z() * slopes_->sy);
-      const double r = reach + margin * inv_minor_;
-      return u * u + v * v <= r * r;
-    }
+    if (slopes_) return within_slopes(w, reach + margin * inv_minor_);
     const Vec3 offset = w - peak_;
     if (offset.squaredNorm() > 2 && reach * major_width_ < kPi / 2) return false;  // far side
     const double a = std::max(0.0, std::abs(offset.dot(major_)) - margin) * inv_major_;
@@ -162,30 +190,36 @@ class Quadrature {
   // second-difference correction wherever a node has its four neighbours.
   Rgb window_sum(QuadratureScratch& s) const {
     const double margin = 1.5 * node_angle_;
-    int y0 = 0;
-    s.spans.clear();
-    if (!ellipse_spans(margin, y0, s.spans)) cap_spans(margin, y0, s.spans);
-    evaluate(s, y0, margin);
+    s.segments.clear();
+    if (!(slopes_ ? slope_spans(margin, s) : ellipse_spans(margin, s)))
+      cap_spans(margin, s.segments);
+    const int row_lo = s.segments.front().row, rows = s.segments.back().row - row_lo + 1;
+    s.row_first.resize(rows + 1);
+    for (std::size_t r = 0, g = 0; r <= static_cast<std::size_t>(rows); ++r) {
+      while (g < s.segments.size() && s.segments[g].row < row_lo + static_cast<int>(r)) ++g;
+      s.row_first[r] = g;
+    }
+    evaluate(s, margin);
     return corrected_sum(s);
   }
 
-  // K and power at every node of the window's rows, both zero outside the window.
-  void evaluate(QuadratureScratch& s, int y0, double margin) const {
-    const int rows = static_cast<int>(s.spans.size());
-    s.offsets.resize(rows + 1);
+  // K and power at every node of the window's segments, both zero outside the window.
+  void evaluate(QuadratureScratch& s, double margin) const {
+    const std::size_t count = s.segments.size();
+    s.offsets.resize(count + 1);
     s.offsets[0] = 0;
-    for (int r = 0; r < rows; ++r)
-      s.offsets[r + 1] = s.offsets[r] + (s.spans[r].second - s.spans[r].first + 1);
+    for (std::size_t g = 0; g < count; ++g)
+      s.offsets[g + 1] = s.offsets[g] + (s.segments[g].x1 - s.segments[g].x0 + 1);
     std::vector<Value>& kernel = s.kernel<Value>();
-    kernel.resize(s.offsets[rows]);
-    s.power.resize(s.offsets[rows]);
-    for (int r = 0; r < rows; ++r) {
-      const double theta = (y0 + r + 0.5) * node_angle_;
+    kernel.resize(s.offsets[count]);
+    s.power.resize(s.offsets[count]);
+    for (std::size_t g = 0; g < count; ++g) {
+      const auto [y, x0, x1] = s.segments[g];
+      const double theta = (y + 0.5) * node_angle_;
       const double st = std::sin(theta), ct = std::cos(theta);
-      const auto [x0, x1] = s.spans[r];
-      std::size_t i = s.offsets[r];
+      std::size_t i = s.offsets[g];
       for (int xs = x0, x = wrap(x0); xs <= x1; ++xs, ++i, x = x + 1 == grid_w_ ? 0 : x + 1) {
-        const EnvNode n = grid_node(x, y0 + r, st, ct);
+        const EnvNode n = grid_node(x, y, st, ct);
         const bool inside = in_window(n.centroid, margin, reach_);
         kernel[i] = inside ? value(n.centroid) : zero<Value>();
         s.power[i] = inside ? n.power : Rgb::Zero();
@@ -193,45 +227,59 @@ class Quadrature {
     }
   }
 
-  // The K values of window row r met column by column along another row's span: null outside
-  // row r's span (rows spanning the whole grid wrap around) or when there is no row r.
-  struct Cursor {
-    const Value* row = nullptr;
-    int i = 0, n = 0;
-    bool full = false;
-    const Value* get() const { return row && i >= 0 && i < n ? row + i : nullptr; }
-    void next() {
-      if (++i == n && full) i = 0;
+  // The K values of one window row, met column by column (increasing) along another row: null
+  // outside the row's segments (a row of the whole grid wraps around) or when there is no row.
+  class RowCursor {
+   public:
+    RowCursor() = default;
+    RowCursor(const QuadratureScratch& s, std::size_t begin, std::size_t end, int grid_w)
+        : s_(&s), g_(begin), end_(end), grid_w_(grid_w) {}
+    const Value* get(int xs) {
+      if (g_ == end_) return nullptr;
+      const auto node = [&](int i) { return &s_->kernel<Value>()[s_->offsets[g_] + i]; };
+      const RowSegment* seg = &s_->segments[g_];
+      if (seg->x1 - seg->x0 + 1 >= grid_w_)  // the row's only segment
+        return node(((xs - seg->x0) % grid_w_ + grid_w_) % grid_w_);
+      while (seg->x1 < xs) {
+        if (++g_ == end_) return nullptr;
+        seg = &s_->segments[g_];
+      }
+      return xs >= seg->x0 ? node(xs - seg->x0) : nullptr;
     }
+
+   private:
+    const QuadratureScratch* s_ = nullptr;
+    std::size_t g_ = 0, end_ = 0;
+    int grid_w_ = 0;
   };
 
-  Cursor cursor(QuadratureScratch& s, int r, int xs) const {
-    if (r < 0 || r >= static_cast<int>(s.spans.size())) return {};
-    const auto [x0, x1] = s.spans[r];
-    const int n = x1 - x0 + 1;
-    const bool full = n >= grid_w_;
-    return {&s.kernel<Value>()[s.offsets[r]], full ? wrap(xs - x0) : xs - x0, n, full};
+  RowCursor row_cursor(const QuadratureScratch& s, int r) const {
+    if (r < 0 || r + 1 >= static_cast<int>(s.row_first.size())) return {};
+    return {s, s.row_first[r], s.row_first[r + 1], grid_w_};
   }
 
   Rgb corrected_sum(QuadratureScratch& s) const {
     Rgb sum = Rgb::Zero();
-    for (int r = 0; r < static_cast<int>(s.spans.size()); ++r) {
-      const auto [x0, x1] = s.spans[r];
-      const int n = x1 - x0 + 1;
-      const bool full = n >= grid_w_;
-      const Value* k = &s.kernel<Value>()[s.offsets[r]];
-      const Rgb* power = &s.power[s.offsets[r]];
-      Cursor up = cursor(s, r - 1, x0), down = cursor(s, r + 1, x0);
-      for (int j = 0; j < n; ++j, up.next(), down.next()) {
-        if (!positive(power[j])) continue;
-        Value v = k[j];
-        const Value *u = up.get(), *d = down.get();
-        if (u && d && (full || (j > 0 && j + 1 < n))) {
-          const Value& left = k[j > 0 ? j - 1 : n - 1];
-          const Value& right = k[j + 1 < n ? j + 1 : 0];
-          v = max0(v + (*u + *d + left + right - 4 * v) / 24);
+    const std::vector<Value>& kernel = s.kernel<Value>();
+    for (int r = 0; r + 1 < static_cast<int>(s.row_first.size()); ++r) {
+      RowCursor up = row_cursor(s, r - 1), down = row_cursor(s, r + 1);
+      for (std::size_t g = s.row_first[r]; g < s.row_first[r + 1]; ++g) {
+        const auto [y, x0, x1] = s.segments[g];
+        const int n = x1 - x0 + 1;
+        const bool full = n >= grid_w_;
+        const Value* k = &kernel[s.offsets[g]];
+        const Rgb* power = &s.power[s.offsets[g]];
+        for (int j = 0; j < n; ++j) {
+          if (!positive(power[j])) continue;
+          Value v = k[j];
+          const Value *u = up.get(x0 + j), *d = down.get(x0 + j);
+          if (u && d && (full || (j > 0 && j + 1 < n))) {
+            const Value& left = k[j > 0 ? j - 1 : n - 1];
+            const Value& right = k[j + 1 < n ? j + 1 : 0];
+            v = max0(v + (*u + *d + left + right - 4 * v) / 24);
+          }
+          sum += power[j] * v;
         }
-        sum += power[j] * v;
       }
     }
     return sum;
@@ -244,14 +292,14 @@ class Quadrature {
 
   // Spans of the spherical cap of the window's major radius (any window, but loose for narrow
   // ellipses), or of the hemisphere above the horizon when that is smaller.
-  void cap_spans(double margin, int& y0, std::vector<std::pair<int, int>>& spans) const {
+  void cap_spans(double margin, std::vector<RowSegment>& segments) const {
     double radius = std::min(kPi, extent_ + margin);
     Vec3 centre = peak_;
     if (horizon_.squaredNorm() > 0 && radius > kPi / 2 + 2 * margin)
       radius = kPi / 2 + 2 * margin, centre = horizon_;
     const double theta_p = std::acos(std::clamp(centre.y(), -1.0, 1.0));
     const double u_p = EnvMap::texcoord(centre).x();
-    y0 = std::max(0, static_cast<int>(std::floor((theta_p - radius) / node_angle_)));
+    const int y0 = std::max(0, static_cast<int>(std::floor((theta_p - radius) / node_angle_)));
     const int y1 =
         std::min(grid_h_ - 1, static_cast<int>(std::floor((theta_p + radius) / node_angle_)));
     for (int y = y0; y <= y1; ++y) {
@@ -262,14 +310,14 @@ class Quadrature {
         x1 = std::min(x0 + grid_w_ - 1,
                       static_cast<int>(std::floor((u_p + half / (2 * kPi)) * grid_w_)));
       }
-      spans.emplace_back(x0, x1);
+      segments.push_back({y, x0, x1});
     }
   }
 
   // Spans of a polygon around the window's ellipse in grid coordinates (columns unwrapped around
   // the peak's), scan-converted row by row. False when the window is too wide or reaches a pole,
   // where lat-long coordinates fold: cap_spans() then.
-  bool ellipse_spans(double margin, int& y0, std::vector<std::pair<int, int>>& spans) const {
+  bool ellipse_spans(double margin, QuadratureScratch& s) const {
     const double a = reach_ * major_width_ + margin, b = reach_ * minor_width_ + margin;
     const double extent = extent_ + margin;
     const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
@@ -278,37 +326,88 @@ class Quadrature {
     // Circumscribed: the polygon's edges stay outside the ellipse.
     const double grow = 1 / std::cos(kPi / kOutline);
     std::array<Vec2, kOutline + 1> p;
-    double y_min = grid_h_, y_max = 0;
     for (int k = 0; k < kOutline; ++k) {
       const double t = 2 * kPi * k / kOutline;
-      const Vec3 d = slopes_ ? slope_outline(k, grow * (reach_ + margin * inv_minor_))
-                             : peak_ + grow * (a * std::cos(t) * major_ + b * std::sin(t) * minor_);
-      const Vec2 uv = EnvMap::texcoord(d);
+      const Vec2 uv =
+          EnvMap::texcoord(peak_ + grow * (a * std::cos(t) * major_ + b * std::sin(t) * minor_));
       double x = uv.x() * grid_w_ - x_p;
       x -= grid_w_ * std::round(x / grid_w_);
       p[k] = Vec2(x_p + x, uv.y() * grid_h_);
-      y_min = std::min(y_min, p[k].y()), y_max = std::max(y_max, p[k].y());
     }
     p[kOutline] = p[0];
-    y0 = std::max(0, static_cast<int>(std::floor(y_min)));
-    const int y1 = std::min(grid_h_ - 1, static_cast<int>(std::floor(y_max)));
-    for (int y = y0; y <= y1; ++y) {
-      double lo = 1e300, hi = -1e300;
-      for (int k = 0; k < kOutline; ++k) {
-        const Vec2 &e0 = p[k], &e1 = p[k + 1];
-        const double t0 = std::max<double>(y, std::min(e0.y(), e1.y()));
-        const double t1 = std::min(y + 1.0, std::max(e0.y(), e1.y()));
-        if (t0 > t1) continue;
-        const double dy = e1.y() - e0.y();
-        for (double t : {t0, t1}) {
-          const double x = dy == 0 ? e0.x() : e0.x() + (t - e0.y()) / dy * (e1.x() - e0.x());
-          lo = std::min(lo, x), hi = std::max(hi, x);
-        }
-      }
-      if (lo > hi) lo = hi = x_p;
-      const int x0 = static_cast<int>(std::floor(lo));
-      spans.emplace_back(x0, std::min(x0 + grid_w_ - 1, static_cast<int>(std::floor(hi))));
+    polygon_segments(p.data(), kOutline, 0, 1, {grid_w_, grid_h_, node_angle_}, s.segments,
+                     s.polygon);
+    return true;
+  }
+
+  // The outline of a slope window (reach deviations, circumscribed) as outline_n_ points in
+  // lat-long coordinates, (phi, theta) in radians, columns unwrapped from point to point, with
+  // its area and perimeter there. None (outline_n_ = 0) where lat-long coordinates fold: the
+  // window contains a pole, or its outline comes within kPoleGap of one (cap_spans() then).
+  void slope_polygon() {
+    const int n = std::clamp(static_cast<int>(std::ceil(extent_ / kSlopeVertexAngle / 4)) * 4,
+                             kOutline, kSlopeOutline / 2);
+    const double radius = reach_ / std::cos(kPi / n);  // circumscribed, as in ellipse_spans()
+    // A window around a pole winds around it: the polygon is then closed along the pole's row
+    // (theta = 0 or pi). A window around both would not wind: cap_spans() then.
+    const bool north = within_slopes(Vec3(0, 1, 0), radius);
+    const bool south = within_slopes(Vec3(0, -1, 0), radius);
+    if (north && south) return;
+    const Vec2 uv = EnvMap::texcoord(slope_outline(0, radius));
+    if (kPi * std::min(uv.y(), 1 - uv.y()) < kPoleGap) return;
+    outline_[0] = Vec2(2 * kPi * uv.x(), kPi * uv.y());
+    int count = 1;
+    for (int k = 0; k < n; ++k)
+      if (!append_outline(2 * kPi * k / n, 2 * kPi * (k + 1) / n, radius, 6, count)) return;
+    if (north || south) {  // the last point is the first one turn along: to the pole and back
+      if (count + 3 > kSlopeOutline + 1) return;
+      const double theta = north ? 0.0 : kPi;
+      outline_[count] = Vec2(outline_[count - 1].x(), theta);
+      outline_[count + 1] = Vec2(outline_[0].x(), theta);
+      count += 3;
     }
+    const int points = count - 1;  // the last is the first again
+    outline_[points] = outline_[0];
+    double area = 0, perimeter = 0;
+    for (int k = 0; k < points; ++k) {
+      area += outline_[k].x() * outline_[k + 1].y() - outline_[k + 1].x() * outline_[k].y();
+      perimeter += (outline_[k + 1] - outline_[k]).norm();
+    }
+    outline_n_ = points, outline_area_ = std::abs(area) / 2, outline_perimeter_ = perimeter;
+  }
+
+  // Appends the outline's points after angle t0 (the last appended) up to t1, halving the step
+  // (at most `depth` times, else false) where consecutive points are more than kOutlineEdge apart
+  // in (phi, theta), as near a pole, so that straight lines between them follow the outline.
+  bool append_outline(double t0, double t1, double radius, int depth, int& count) {
+    const Vec2 uv = EnvMap::texcoord(slope_outline(t1, radius));
+    if (kPi * std::min(uv.y(), 1 - uv.y()) < kPoleGap) return false;
+    double x = 2 * kPi * uv.x();
+    x -= 2 * kPi * std::round((x - outline_[count - 1].x()) / (2 * kPi));
+    const Vec2 p(x, kPi * uv.y());
+    if ((p - outline_[count - 1]).norm() > kOutlineEdge) {
+      if (depth == 0) return false;  // folded too fast to follow, right by a pole
+      const double mid = (t0 + t1) / 2;
+      return append_outline(t0, mid, radius, depth - 1, count) &&
+             append_outline(mid, t1, radius, depth - 1, count);
+    }
+    if (count > kSlopeOutline) return false;
+    outline_[count++] = p;
+    return true;
+  }
+
+  // Spans of a slope window: its outline scan-converted, then widened by the margin in lat-long.
+  // It follows the window where it bends away from the ellipse around the peak, such as the
+  // sliver of an anisotropic lobe as long as a hemisphere, whose cap would be a hemisphere.
+  // (Widening in slope space instead would lengthen a sliver by the margin in its narrow
+  // deviations.)
+  bool slope_spans(double margin, QuadratureScratch& s) const {
+    if (outline_n_ == 0) return false;
+    std::array<Vec2, kSlopeOutline + 1> p;
+    for (int k = 0; k <= outline_n_; ++k) p[k] = outline_[k] / node_angle_;
+    polygon_segments(p.data(), outline_n_, static_cast<int>(std::ceil(margin / node_angle_)),
+                     std::sin(kPoleGap / 2), {grid_w_, grid_h_, node_angle_}, s.segments,
+                     s.polygon);
     return true;
   }
 
@@ -358,7 +457,10 @@ class Quadrature {
 
   const EnvPyramid& env_;
   const Kernel& kernel_;
-  static constexpr int kOutline = 32;  // vertices of the window's outline
+  // slope_polygon(): points, their count (0: none), area and perimeter in (phi, theta) radians.
+  std::array<Vec2, kSlopeOutline + 1> outline_;
+  int outline_n_ = 0;
+  double outline_area_ = 0, outline_perimeter_ = 0;
   Vec3 peak_, major_, minor_, horizon_;
   std::optional<KernelShape::Slopes> slopes_;
   double extent_;  // largest angle between the peak and the window's edge

@@ -1,0 +1,102 @@
+#include "window_rows.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace brdfnav {
+
+namespace {
+
+bool row_then_column(const RowSegment& a, const RowSegment& b) {
+  return a.row != b.row ? a.row < b.row : a.x0 < b.x0;
+}
+
+// Appends `pieces` (sorted) to `out` with the overlapping and adjacent ones of a row merged; a
+// row whose segments reach across the grid's width (they would wrap onto each other) becomes
+// one segment of the whole row.
+void merge_rows(const std::vector<RowSegment>& pieces, int width, std::vector<RowSegment>& out) {
+  std::size_t row_begin = out.size();
+  for (const RowSegment& piece : pieces) {
+    if (out.size() > row_begin && out.back().row == piece.row && piece.x0 <= out.back().x1 + 1) {
+      out.back().x1 = std::max(out.back().x1, piece.x1);
+      continue;
+    }
+    if (out.size() > row_begin && out.back().row != piece.row) row_begin = out.size();
+    out.push_back(piece);
+  }
+  // Rows reaching across the width, from the last backwards (erasing keeps earlier indices).
+  for (std::size_t end = out.size(); end > 0;) {
+    std::size_t begin = end - 1;
+    while (begin > 0 && out[begin - 1].row == out[end - 1].row) --begin;
+    if (out[end - 1].x1 - out[begin].x0 + 1 >= width) {
+      out[begin].x1 = out[begin].x0 + width - 1;
+      out.erase(out.begin() + static_cast<std::ptrdiff_t>(begin + 1),
+                out.begin() + static_cast<std::ptrdiff_t>(end));
+    }
+    end = begin;
+  }
+}
+
+}  // namespace
+
+std::size_t polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGrid& grid,
+                             std::vector<RowSegment>& out, PolygonScratch& s) {
+  const std::size_t before = out.size();
+  s.pieces.clear();
+  s.crossings.clear();
+  for (int k = 0; k < n; ++k) {
+    const Vec2 &e0 = p[k], &e1 = p[k + 1];
+    const double lo_y = std::min(e0.y(), e1.y()), hi_y = std::max(e0.y(), e1.y());
+    const double dy = e1.y() - e0.y();
+    auto x_at = [&](double y) {
+      return dy == 0 ? e0.x() : e0.x() + (y - e0.y()) / dy * (e1.x() - e0.x());
+    };
+    const int first = std::max(0, static_cast<int>(std::floor(lo_y)));
+    const int last = std::min(grid.height - 1, static_cast<int>(std::floor(hi_y)));
+    for (int y = first; y <= last; ++y) {
+      // The edge's part within the row, then where it crosses the row's centre line (half open,
+      // so that a vertex on the line counts once).
+      const double a = x_at(std::max<double>(y, lo_y)), b = x_at(std::min(y + 1.0, hi_y));
+      s.pieces.push_back({y, static_cast<int>(std::floor(std::min(a, b))),
+                          static_cast<int>(std::floor(std::max(a, b)))});
+      const double centre = y + 0.5;
+      if ((e0.y() <= centre) != (e1.y() <= centre)) s.crossings.emplace_back(y, x_at(centre));
+    }
+  }
+  // Inside the polygon on a centre line: between the 1st and 2nd crossing, the 3rd and 4th...
+  // Every node whose cell meets the polygon is on an edge's part or on such a span.
+  std::sort(s.crossings.begin(), s.crossings.end());
+  for (std::size_t i = 0; i + 1 < s.crossings.size();) {
+    const auto [row, x0] = s.crossings[i];
+    const auto [next_row, x1] = s.crossings[i + 1];
+    if (next_row != row) {  // rounding left a row with an odd count
+      ++i;
+      continue;
+    }
+    s.pieces.push_back({row, static_cast<int>(std::floor(x0)), static_cast<int>(std::floor(x1))});
+    i += 2;
+  }
+  std::sort(s.pieces.begin(), s.pieces.end(), row_then_column);
+  if (pad == 0) {
+    merge_rows(s.pieces, grid.width, out);
+    return out.size() - before;
+  }
+  s.merged.clear();
+  merge_rows(s.pieces, grid.width, s.merged);
+  s.padded.clear();
+  for (const RowSegment& m : s.merged) {
+    for (int y = std::max(0, m.row - pad); y <= std::min(grid.height - 1, m.row + pad); ++y) {
+      // Columns are narrower by sin(theta): the smallest over the rows the padding spans.
+      const double sin_theta =
+          std::min(std::sin(std::max(y - pad, 0) * grid.node_angle),
+                   std::sin(std::min(y + 1 + pad, grid.height) * grid.node_angle));
+      const int columns = static_cast<int>(std::ceil(pad / std::max(sin_theta, min_sin)));
+      s.padded.push_back({y, m.x0 - columns, m.x1 + columns});
+    }
+  }
+  std::sort(s.padded.begin(), s.padded.end(), row_then_column);
+  merge_rows(s.padded, grid.width, out);
+  return out.size() - before;
+}
+
+}  // namespace brdfnav
