@@ -112,7 +112,11 @@ SceneStudy run_fig3(const Inputs& in, Renderer& reference, int resolution) {
 ValidationResults run(const ValidateOptions& o) {
   const Inputs in(o);
   check_writable(o.out);
-  ValidationResults r{o.resolution, kDefaultEnvPath, o.envs, o.db};
+  ValidationResults r;
+  r.resolution = o.resolution;
+  r.reference_env = kDefaultEnvPath;
+  r.other_envs = o.envs;
+  r.database = o.db;
   Renderer main(in.reference, in.sphere, o.resolution);
   r.fig2 = timed("figure 2", [&] { return pellacini_study(main); });
   r.fig3 = timed("figure 3", [&] { return run_fig3(in, main, o.resolution); });

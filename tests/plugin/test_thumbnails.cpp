@@ -74,7 +74,9 @@ TEST(Thumbnails, AreResampledToTheAskedSizeWithABinaryMask) {
       const float a = t.pixel(x, y)[3];
       ASSERT_TRUE(a == 0.f || a == 1.f);
       covered += a == 1.f;
-      if (a == 1.f) ASSERT_GE(t.pixel(x, y)[1], 0.f);
+      if (a == 1.f) {
+        ASSERT_GE(t.pixel(x, y)[1], 0.f);
+      }
     }
   // The unit disk covers pi/4 of the image.
   EXPECT_NEAR(covered / (128.0 * 128.0), kPi / 4, 0.03);
