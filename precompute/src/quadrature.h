@@ -227,30 +227,44 @@ class Quadrature {
     }
   }
 
-  // The K values of one window row, met column by column (increasing) along another row: null
+  // The K values of one window row met column by column along another row's segment: null
   // outside the row's segments (a row of the whole grid wraps around) or when there is no row.
   class RowCursor {
    public:
     RowCursor() = default;
     RowCursor(const QuadratureScratch& s, std::size_t begin, std::size_t end, int grid_w)
-        : s_(&s), g_(begin), end_(end), grid_w_(grid_w) {}
-    const Value* get(int xs) {
-      if (g_ == end_) return nullptr;
-      const auto node = [&](int i) { return &s_->kernel<Value>()[s_->offsets[g_] + i]; };
-      const RowSegment* seg = &s_->segments[g_];
-      if (seg->x1 - seg->x0 + 1 >= grid_w_)  // the row's only segment
-        return node(((xs - seg->x0) % grid_w_ + grid_w_) % grid_w_);
-      while (seg->x1 < xs) {
-        if (++g_ == end_) return nullptr;
-        seg = &s_->segments[g_];
+        : s_(&s), g_(begin), end_(end), grid_w_(grid_w) {
+      if (g_ < end_) load();
+    }
+    // To column xs, at or after the previous seek's.
+    void seek(int xs) {
+      while (g_ + 1 < end_ && s_->segments[g_].x1 < xs) ++g_, load();
+      if (g_ < end_) i_ = full_ ? ((xs - x0_) % n_ + n_) % n_ : xs - x0_;
+    }
+    const Value* get() const { return i_ >= 0 && i_ < n_ ? k_ + i_ : nullptr; }
+    void next() {
+      if (++i_ < n_) return;
+      if (full_) {
+        i_ = 0;
+      } else if (g_ + 1 < end_) {  // on to the next segment, column x0_ + n_
+        const int xs = x0_ + n_;
+        ++g_, load();
+        i_ = xs - x0_;
       }
-      return xs >= seg->x0 ? node(xs - seg->x0) : nullptr;
     }
 
    private:
+    void load() {
+      const RowSegment& seg = s_->segments[g_];
+      x0_ = seg.x0, n_ = seg.x1 - seg.x0 + 1;
+      full_ = n_ >= grid_w_;  // then the row's only segment
+      k_ = &s_->kernel<Value>()[s_->offsets[g_]];
+    }
     const QuadratureScratch* s_ = nullptr;
     std::size_t g_ = 0, end_ = 0;
-    int grid_w_ = 0;
+    int grid_w_ = 0, x0_ = 0, n_ = 0, i_ = 0;
+    bool full_ = false;
+    const Value* k_ = nullptr;
   };
 
   RowCursor row_cursor(const QuadratureScratch& s, int r) const {
@@ -269,10 +283,11 @@ class Quadrature {
         const bool full = n >= grid_w_;
         const Value* k = &kernel[s.offsets[g]];
         const Rgb* power = &s.power[s.offsets[g]];
-        for (int j = 0; j < n; ++j) {
+        up.seek(x0), down.seek(x0);
+        for (int j = 0; j < n; ++j, up.next(), down.next()) {
           if (!positive(power[j])) continue;
           Value v = k[j];
-          const Value *u = up.get(x0 + j), *d = down.get(x0 + j);
+          const Value *u = up.get(), *d = down.get();
           if (u && d && (full || (j > 0 && j + 1 < n))) {
             const Value& left = k[j > 0 ? j - 1 : n - 1];
             const Value& right = k[j + 1 < n ? j + 1 : 0];
@@ -335,8 +350,7 @@ class Quadrature {
       p[k] = Vec2(x_p + x, uv.y() * grid_h_);
     }
     p[kOutline] = p[0];
-    polygon_segments(p.data(), kOutline, 0, 1, {grid_w_, grid_h_, node_angle_}, s.segments,
-                     s.polygon);
+    convex_polygon_rows(p.data(), kOutline, {grid_w_, grid_h_, node_angle_}, s.segments, s.polygon);
     return true;
   }
 

@@ -1,6 +1,7 @@
 #include "window_rows.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 
 namespace brdfnav {
@@ -37,13 +38,12 @@ void merge_rows(const std::vector<RowSegment>& pieces, int width, std::vector<Ro
   }
 }
 
-}  // namespace
-
-std::size_t polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGrid& grid,
-                             std::vector<RowSegment>& out, PolygonScratch& s) {
-  const std::size_t before = out.size();
-  s.pieces.clear();
-  s.crossings.clear();
+// Calls row(y, a, b, crossing) for every grid row y in [0, height) that an edge of the closed
+// polygon p[0..n] crosses: a and b are the edge's x where it enters and leaves the row, crossing
+// its x on the row's centre line, or NaN where it does not cross that line (half open, so that a
+// vertex on the line counts once).
+template <typename Row>
+void edge_rows(const Vec2* p, int n, int height, Row&& row) {
   for (int k = 0; k < n; ++k) {
     const Vec2 &e0 = p[k], &e1 = p[k + 1];
     const double lo_y = std::min(e0.y(), e1.y()), hi_y = std::max(e0.y(), e1.y());
@@ -52,17 +52,49 @@ std::size_t polygon_segments(const Vec2* p, int n, int pad, double min_sin, cons
       return dy == 0 ? e0.x() : e0.x() + (y - e0.y()) / dy * (e1.x() - e0.x());
     };
     const int first = std::max(0, static_cast<int>(std::floor(lo_y)));
-    const int last = std::min(grid.height - 1, static_cast<int>(std::floor(hi_y)));
+    const int last = std::min(height - 1, static_cast<int>(std::floor(hi_y)));
     for (int y = first; y <= last; ++y) {
-      // The edge's part within the row, then where it crosses the row's centre line (half open,
-      // so that a vertex on the line counts once).
-      const double a = x_at(std::max<double>(y, lo_y)), b = x_at(std::min(y + 1.0, hi_y));
-      s.pieces.push_back({y, static_cast<int>(std::floor(std::min(a, b))),
-                          static_cast<int>(std::floor(std::max(a, b)))});
       const double centre = y + 0.5;
-      if ((e0.y() <= centre) != (e1.y() <= centre)) s.crossings.emplace_back(y, x_at(centre));
+      row(y, x_at(std::max<double>(y, lo_y)), x_at(std::min(y + 1.0, hi_y)),
+          (e0.y() <= centre) != (e1.y() <= centre) ? x_at(centre) : std::nan(""));
     }
   }
+}
+
+int floor_int(double x) {
+  return static_cast<int>(std::floor(x));
+}
+
+}  // namespace
+
+std::size_t convex_polygon_rows(const Vec2* p, int n, const RowGrid& grid,
+                                std::vector<RowSegment>& out, PolygonScratch& s) {
+  double y_min = p[0].y(), y_max = p[0].y();
+  for (int k = 1; k < n; ++k) y_min = std::min(y_min, p[k].y()), y_max = std::max(y_max, p[k].y());
+  const int y0 = std::max(0, floor_int(y_min)), y1 = std::min(grid.height - 1, floor_int(y_max));
+  s.pieces.assign(std::max(0, y1 - y0 + 1), {0, INT_MAX, INT_MIN});
+  edge_rows(p, n, grid.height, [&](int y, double a, double b, double) {
+    RowSegment& row = s.pieces[y - y0];
+    row.x0 = std::min(row.x0, floor_int(std::min(a, b)));
+    row.x1 = std::max(row.x1, floor_int(std::max(a, b)));
+  });
+  const std::size_t before = out.size();
+  for (int y = y0; y <= y1; ++y) {
+    const RowSegment& row = s.pieces[y - y0];
+    if (row.x0 <= row.x1) out.push_back({y, row.x0, std::min(row.x1, row.x0 + grid.width - 1)});
+  }
+  return out.size() - before;
+}
+
+std::size_t polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGrid& grid,
+                             std::vector<RowSegment>& out, PolygonScratch& s) {
+  const std::size_t before = out.size();
+  s.pieces.clear();
+  s.crossings.clear();
+  edge_rows(p, n, grid.height, [&](int y, double a, double b, double crossing) {
+    s.pieces.push_back({y, floor_int(std::min(a, b)), floor_int(std::max(a, b))});
+    if (!std::isnan(crossing)) s.crossings.emplace_back(y, crossing);
+  });
   // Inside the polygon on a centre line: between the 1st and 2nd crossing, the 3rd and 4th...
   // Every node whose cell meets the polygon is on an edge's part or on such a span.
   std::sort(s.crossings.begin(), s.crossings.end());
@@ -73,7 +105,7 @@ std::size_t polygon_segments(const Vec2* p, int n, int pad, double min_sin, cons
       ++i;
       continue;
     }
-    s.pieces.push_back({row, static_cast<int>(std::floor(x0)), static_cast<int>(std::floor(x1))});
+    s.pieces.push_back({row, floor_int(x0), floor_int(x1)});
     i += 2;
   }
   std::sort(s.pieces.begin(), s.pieces.end(), row_then_column);

@@ -35,4 +35,9 @@ struct RowGrid {
 std::size_t polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGrid& grid,
                              std::vector<RowSegment>& out, PolygonScratch& scratch);
 
+// The same for a convex polygon without padding (one segment per row, from the leftmost to the
+// rightmost point of the edges crossing it), in a single pass.
+std::size_t convex_polygon_rows(const Vec2* p, int n, const RowGrid& grid,
+                                std::vector<RowSegment>& out, PolygonScratch& scratch);
+
 }  // namespace brdfnav

@@ -1,6 +1,6 @@
 // The quadrature window's rows (precompute/src/window_rows.h): every node whose cell meets the
-// polygon is in a segment, a curved sliver is not filled between its ends, padding and rows
-// wider than the grid.
+// polygon is in a segment, the convex scan agrees on convex polygons, a curved sliver is not
+// filled between its ends, padding and rows wider than the grid.
 #include "window_rows.h"
 
 #include <gtest/gtest.h>
@@ -101,6 +101,34 @@ TEST(WindowRows, EveryCellMeetingARandomPolygonIsCovered) {
     for (const auto& cell : sampled_cells(p, rng))
       ASSERT_TRUE(covered.count(cell)) << "trial " << trial << ": row " << cell.first << ", column "
                                        << cell.second << " left out";
+  }
+}
+
+TEST(WindowRows, TheConvexScanGivesTheSameRowsOnConvexPolygons) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int trial = 0; trial < 50; ++trial) {
+    // Ellipses as the quadrature outlines them, columns past the width on some.
+    const Vec2 centre(200 + 100 * u(rng), 20 + 80 * u(rng));
+    const double a = 0.5 + 30 * u(rng), b = 0.5 + 10 * u(rng), turn = kPi * u(rng);
+    std::vector<Vec2> p;
+    for (int k = 0; k < 32; ++k) {
+      const double t = 2 * kPi * k / 32;
+      const Vec2 e(a * std::cos(t), b * std::sin(t));
+      p.push_back(centre + Vec2(std::cos(turn) * e.x() - std::sin(turn) * e.y(),
+                                std::sin(turn) * e.x() + std::cos(turn) * e.y()));
+    }
+    p.push_back(p.front());
+    std::vector<RowSegment> convex, general;
+    PolygonScratch scratch;
+    convex_polygon_rows(p.data(), 32, kGrid, convex, scratch);
+    polygon_segments(p.data(), 32, 0, 1, kGrid, general, scratch);
+    ASSERT_EQ(convex.size(), general.size()) << "trial " << trial;
+    for (std::size_t i = 0; i < convex.size(); ++i) {
+      EXPECT_EQ(convex[i].row, general[i].row);
+      EXPECT_EQ(convex[i].x0, general[i].x0);
+      EXPECT_EQ(convex[i].x1, general[i].x1);
+    }
   }
 }
 
