@@ -11,6 +11,21 @@
 
 namespace brdfnav {
 
+namespace {
+// Per-channel 1 / lambda^2 (micrometres^-2) and its logarithm.
+const Rgb& inv_lambda_squared() {
+  static const Rgb k = [] {
+    const Rgb lambda(He::kLambda[0], He::kLambda[1], He::kLambda[2]);
+    return Rgb((lambda * lambda).inverse());
+  }();
+  return k;
+}
+const Rgb& log_inv_lambda_squared() {
+  static const Rgb log_k = inv_lambda_squared().log();
+  return log_k;
+}
+}  // namespace
+
 namespace he_detail {
 
 namespace {
@@ -123,22 +138,40 @@ Rgb series_sum(const Rgb& g, const Rgb& t) {
 }
 
 Rgb tabulated_series_sum(const Rgb& g, const Rgb& t) {
-  return Rgb(tabulated_series_sum(g[0], t[0]), tabulated_series_sum(g[1], t[1]),
-             tabulated_series_sum(g[2], t[2]));
+  Rgb out;
+  for (int c = 0; c < 3; ++c) out[c] = tabulated_series_sum(g[c], std::log(g[c]), t[c]);
+  return out;
 }
 
 Rgb rough_limit_sum(const Rgb& g, const Rgb& t) {
   return (-t / g).exp() / g;
 }
 
+namespace {
+// One channel of distribution_sum(), with log_g = ln(g).
+double channel_distribution_sum(double g, double log_g, double t) {
+  const double w = smoothstep((g - kBlendLo) / (kBlendHi - kBlendLo));
+  const double series = w < 1 ? tabulated_series_sum(g, log_g, t) : 0.0;
+  const double limit = w > 0 ? std::exp(-t / g) / g : 0.0;
+  return (1.0 - w) * series + w * limit;
+}
+
+// distribution_sum() of g = g_scale / lambda^2 and t = t_scale / lambda^2 per channel, with one
+// log() for the three ln(g).
+Rgb distribution_sum_per_wavelength(double g_scale, double t_scale) {
+  const Rgb& k = inv_lambda_squared();
+  const Rgb& log_k = log_inv_lambda_squared();
+  const double log_g_scale = std::log(g_scale);
+  Rgb out;
+  for (int c = 0; c < 3; ++c)
+    out[c] = channel_distribution_sum(g_scale * k[c], log_g_scale + log_k[c], t_scale * k[c]);
+  return out;
+}
+}  // namespace
+
 Rgb distribution_sum(const Rgb& g, const Rgb& t) {
   Rgb out;
-  for (int c = 0; c < 3; ++c) {
-    const double w = smoothstep((g[c] - kBlendLo) / (kBlendHi - kBlendLo));
-    const double series = w < 1 ? tabulated_series_sum(g[c], t[c]) : 0.0;
-    const double limit = w > 0 ? std::exp(-t[c] / g[c]) / g[c] : 0.0;
-    out[c] = (1.0 - w) * series + w * limit;
-  }
+  for (int c = 0; c < 3; ++c) out[c] = channel_distribution_sum(g[c], std::log(g[c]), t[c]);
   return out;
 }
 
@@ -151,11 +184,6 @@ namespace {
 // horizon.
 constexpr double kMinCos = 1e-10;
 
-// Per-channel 1 / lambda^2 (micrometres^-2).
-Rgb inv_lambda_squared() {
-  const Rgb lambda(He::kLambda[0], He::kLambda[1], He::kLambda[2]);
-  return (lambda * lambda).inverse();
-}
 
 // Sampling: a Beckmann half-vector lobe (see sampling_slopes) mixed with a kWideFactor times wider
 // one, which covers the lobe's heavier tails (its Poisson components with m above g) and the
@@ -268,12 +296,10 @@ Rgb He::lobe(const DirectionTerms& i, const DirectionTerms& o) const {
 
   // Per channel: g = (2 pi sigma0 vz / lambda)^2, t = pi^2 tau^2 vxy^2 / lambda^2 and D's prefactor
   // pi^2 tau^2 / (4 lambda^2).
-  const Rgb inv_lambda2 = inv_lambda_squared();
   const double g_scale = (2.0 * kPi * sigma0 * vz) * (2.0 * kPi * sigma0 * vz);
   const double tau_scale = kPi * kPi * tau * tau;
-  const Rgb sum =
-      he_detail::distribution_sum(g_scale * inv_lambda2, tau_scale * vxy2 * inv_lambda2);
-  return common * (0.25 * tau_scale) * inv_lambda2 * sum;
+  const Rgb sum = he_detail::distribution_sum_per_wavelength(g_scale, tau_scale * vxy2);
+  return common * (0.25 * tau_scale) * inv_lambda_squared() * sum;
 }
 
 Rgb He::mirror_weight(const Vec3& wo) const {

@@ -221,13 +221,13 @@ double tabulated_sigma0_ratio(double y) {
   return y <= table.end() ? table(y)[0] : sigma0_ratio(y);
 }
 
-double tabulated_series_sum(double g, double t) {
+double tabulated_series_sum(double g, double log_g, double t) {
   if (!(g > 0)) return 0.0;
   t = std::max(t, 0.0);
   if (g < kTableLoG) return small_g_series_sum(g, t);
   const double w2 = t / (g + 1);
   if (!(w2 < kTableW * kTableW)) return 0.0;
-  return std::exp(series_table().log_sum(std::log(g), std::sqrt(w2)));
+  return std::exp(series_table().log_sum(log_g, std::sqrt(w2)));
 }
 
 }  // namespace brdfnav::he_detail

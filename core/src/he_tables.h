@@ -3,6 +3,7 @@
 
 namespace brdfnav::he_detail {
 
-double tabulated_series_sum(double g, double t);
+// With log_g = ln(g), which the caller may have at hand for less than a log().
+double tabulated_series_sum(double g, double log_g, double t);
 
 }  // namespace brdfnav::he_detail
