@@ -64,6 +64,7 @@ class Quadrature {
   static constexpr double kOutlineEdge = 0.05;
   static constexpr double kPoleGap = 0.01;  // radians: nearer a pole, lat-long lines fold
   static constexpr double kPolygonCost = 2048;
+  static constexpr double kMaxEllipseAspect = 4;
 
  public:
   // `horizon` is the normal of the half space the kernel lives in (K = 0 below it), or zero for
@@ -89,8 +90,18 @@ class Quadrature {
     // what is smooth at the scale of a node.
     const double wanted_step =
         std::min(shape.node_width / quality.texels_per_width, quality.max_node);
-    // The polygon costs about as much as kPolygonCost nodes: not worth it for a small cap.
-    if (slopes_ && cap_area(extent_) > kPolygonCost * wanted_step * wanted_step) slope_polygon();
+    const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
+    // Not a slope window over kMaxEllipseAspect times as long as wide either: ellipse_spans()
+    // outlines it with kOutline points and widens it by the margin in its narrow deviations,
+    // which lengthens it as much again. Ward 0.5 x 0.005 at 32 x 32 had accuracy ratios of
+    // 0.52 / 0.79 that way, 0.033 / 0.047 through slope_spans().
+    ellipse_ = extent_ <= 1.0 && theta_p - 1.2 * extent_ > 0 && theta_p + 1.2 * extent_ < kPi &&
+               (!slopes_ || std::max(slopes_->sx, slopes_->sy) <=
+                                kMaxEllipseAspect * std::min(slopes_->sx, slopes_->sy));
+    // A slope window too long for ellipse_spans() is a polygon, which costs about as much as
+    // kPolygonCost nodes: not worth it for a small cap.
+    if (slopes_ && !ellipse_ && cap_area(extent_) > kPolygonCost * wanted_step * wanted_step)
+      slope_polygon();
     const double step = coarsened_step(wanted_step, quality);
     level_ = 0;
     while (level_ + 1 < env.level_count() && env.node_angle(level_ + 1) <= step) ++level_;
@@ -117,11 +128,9 @@ class Quadrature {
   // their narrow side. Such a lobe is then integrated a little blurred across, in bounded time.
   double coarsened_step(double step, const RenderQuality& quality) const {
     const double a = extent_, b = reach_ * minor_width_;
-    const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
-    const bool ellipse = a <= 1.0 && theta_p - 1.2 * a > 0 && theta_p + 1.2 * a < kPi;
     auto area = [&](double h) {  // what window_sum() enumerates, margins included
+      if (ellipse_) return kPi * (a + 3 * h) * (b + 3 * h);
       if (outline_n_ > 0) return outline_area_ + 3 * h * outline_perimeter_;
-      if (ellipse) return kPi * (a + 3 * h) * (b + 3 * h);
       return cap_area(a + 3 * h);
     };
     for (int i = 0; i < 4 && area(step) > quality.max_nodes * step * step; ++i)
@@ -191,8 +200,7 @@ class Quadrature {
   Rgb window_sum(QuadratureScratch& s) const {
     const double margin = 1.5 * node_angle_;
     s.segments.clear();
-    if (!(slopes_ ? slope_spans(margin, s) : ellipse_spans(margin, s)))
-      cap_spans(margin, s.segments);
+    if (!ellipse_spans(margin, s) && !slope_spans(margin, s)) cap_spans(margin, s.segments);
     const int row_lo = s.segments.front().row, rows = s.segments.back().row - row_lo + 1;
     s.row_first.resize(rows + 1);
     for (std::size_t r = 0, g = 0; r <= static_cast<std::size_t>(rows); ++r) {
@@ -329,10 +337,12 @@ class Quadrature {
     }
   }
 
-  // Spans of a polygon around the window's ellipse in grid coordinates (columns unwrapped around
+  // Spans of a polygon around the window's ellipse (or the slope window's outline, then as wide
+  // as the margin in its narrowest deviations) in grid coordinates (columns unwrapped around
   // the peak's), scan-converted row by row. False when the window is too wide or reaches a pole,
-  // where lat-long coordinates fold: cap_spans() then.
+  // where lat-long coordinates fold: slope_spans() or cap_spans() then.
   bool ellipse_spans(double margin, QuadratureScratch& s) const {
+    if (!ellipse_) return false;
     const double a = reach_ * major_width_ + margin, b = reach_ * minor_width_ + margin;
     const double extent = extent_ + margin;
     const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
@@ -343,8 +353,9 @@ class Quadrature {
     std::array<Vec2, kOutline + 1> p;
     for (int k = 0; k < kOutline; ++k) {
       const double t = 2 * kPi * k / kOutline;
-      const Vec2 uv =
-          EnvMap::texcoord(peak_ + grow * (a * std::cos(t) * major_ + b * std::sin(t) * minor_));
+      const Vec3 d = slopes_ ? slope_outline(t, grow * (reach_ + margin * inv_minor_))
+                             : peak_ + grow * (a * std::cos(t) * major_ + b * std::sin(t) * minor_);
+      const Vec2 uv = EnvMap::texcoord(d);
       double x = uv.x() * grid_w_ - x_p;
       x -= grid_w_ * std::round(x / grid_w_);
       p[k] = Vec2(x_p + x, uv.y() * grid_h_);
@@ -410,11 +421,10 @@ class Quadrature {
     return true;
   }
 
-  // Spans of a slope window: its outline scan-converted, then widened by the margin in lat-long.
-  // It follows the window where it bends away from the ellipse around the peak, such as the
-  // sliver of an anisotropic lobe as long as a hemisphere, whose cap would be a hemisphere.
-  // (Widening in slope space instead would lengthen a sliver by the margin in its narrow
-  // deviations.)
+  // Spans of a slope window too long for ellipse_spans(): its outline scan-converted, then
+  // widened by the margin in lat-long, such as the sliver of an anisotropic lobe as long as a
+  // hemisphere, whose cap would be a hemisphere. (Widening in slope space, as ellipse_spans()
+  // does, would lengthen a long sliver by the margin in its narrow deviations.)
   bool slope_spans(double margin, QuadratureScratch& s) const {
     if (outline_n_ == 0) return false;
     std::array<Vec2, kSlopeOutline + 1> p;
@@ -471,6 +481,7 @@ class Quadrature {
 
   const EnvPyramid& env_;
   const Kernel& kernel_;
+  bool ellipse_;  // a window ellipse_spans() takes, margins aside
   // slope_polygon(): points, their count (0: none), area and perimeter in (phi, theta) radians.
   std::array<Vec2, kSlopeOutline + 1> outline_;
   int outline_n_ = 0;
