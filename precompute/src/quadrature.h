@@ -123,9 +123,10 @@ class Quadrature {
   }
 
  private:
-  // `step`, or the larger step that keeps the nodes the window enumerates within max_nodes: very
-  // anisotropic lobes (Ward 0.5 x 0.005) would otherwise enumerate a hemisphere at the step of
-  // their narrow side. Such a lobe is then integrated a little blurred across, in bounded time.
+  // `step`, or the larger step that keeps the nodes the window enumerates within max_nodes: a
+  // window that takes the cap (as wide as a hemisphere for a lobe long enough) would otherwise
+  // enumerate it at the step of its narrow side. Such a lobe is then integrated a little blurred
+  // across, in bounded time.
   double coarsened_step(double step, const RenderQuality& quality) const {
     const double a = extent_, b = reach_ * minor_width_;
     auto area = [&](double h) {  // what window_sum() enumerates, margins included
@@ -201,6 +202,7 @@ class Quadrature {
     const double margin = 1.5 * node_angle_;
     s.segments.clear();
     if (!ellipse_spans(margin, s) && !slope_spans(margin, s)) cap_spans(margin, s.segments);
+    if (s.segments.empty()) return Rgb::Zero();  // a window between rows: no node at all
     const int row_lo = s.segments.front().row, rows = s.segments.back().row - row_lo + 1;
     s.row_first.resize(rows + 1);
     for (std::size_t r = 0, g = 0; r <= static_cast<std::size_t>(rows); ++r) {
@@ -368,7 +370,8 @@ class Quadrature {
   // The outline of a slope window (reach deviations, circumscribed) as outline_n_ points in
   // lat-long coordinates, (phi, theta) in radians, columns unwrapped from point to point, with
   // its area and perimeter there. None (outline_n_ = 0) where lat-long coordinates fold: the
-  // window contains a pole, or its outline comes within kPoleGap of one (cap_spans() then).
+  // window contains both poles, or its outline comes within kPoleGap of one or folds too fast to
+  // follow (cap_spans() then).
   void slope_polygon() {
     const int n = std::clamp(static_cast<int>(std::ceil(extent_ / kSlopeVertexAngle / 4)) * 4,
                              kOutline, kSlopeOutline / 2);

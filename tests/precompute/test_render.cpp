@@ -99,6 +99,21 @@ TEST(Render, DeterministicWhateverTheThreadCount) {
       EXPECT_EQ(runs[r][i].rgba, runs[0][i].rgba) << "image " << i << ", run " << r;
 }
 
+// He's mirror lookups are computed once per renderer and shared by every He material: an image
+// does not depend on which He images the renderer made before it.
+TEST(Render, HeImagesDoNotDependOnTheRenderersHistory) {
+  const Scene sphere = Scene::sphere();
+  const std::vector<double> smooth_params{0.1, 10, 1.5}, rough_params{1.5, 4, 4};
+  const Lobe smooth = make_lobe(ModelId::he, smooth_params);
+  const Lobe rough = make_lobe(ModelId::he, rough_params);
+  Renderer fresh(interior(), sphere, 16), used(interior(), sphere, 16);
+  used.specular(smooth);
+  EXPECT_EQ(used.specular(rough).rgba, fresh.specular(rough).rgba);
+  Renderer prepared(interior(), sphere, 16);
+  prepared.prepare(smooth);
+  EXPECT_EQ(prepared.specular(smooth).rgba, used.specular(smooth).rgba);
+}
+
 // A hemispherical bowl open toward the camera: from its bottom, the rim hides every direction
 // below 45 degrees of elevation, so under a constant sky a Lambertian bottom receives
 // sin^2(45 deg) = 1/2 of what the sphere's centre does.
