@@ -56,13 +56,15 @@ template <typename Kernel, typename Visible = AlwaysVisible>
 class Quadrature {
   using Value = typename Kernel::Value;
   static constexpr int kOutline = 32;  // vertices of the window's outline
-  // ... of a slope window's: one per kSlopeVertexAngle of its extent (at most half of
-  // kSlopeOutline), more where they are over kOutlineEdge apart in (phi, theta): straight lines
-  // in lat-long between them then stay close to the true outline.
-  static constexpr int kSlopeOutline = 512;
+  // ... of a slope window's: one per kSlopeVertexAngle of its extent (at most
+  // kSlopeOutlineStart), then more where they are over kOutlineEdge apart in (phi, theta), as
+  // near a pole, up to kSlopeOutline: straight lines in lat-long between them then stay close to
+  // the true outline.
+  static constexpr int kSlopeOutlineStart = 256;
+  static constexpr int kSlopeOutline = 2048;
   static constexpr double kSlopeVertexAngle = 1.0 / 128;
   static constexpr double kOutlineEdge = 0.05;
-  static constexpr double kPoleGap = 0.01;  // radians: nearer a pole, lat-long lines fold
+  static constexpr double kPoleGap = 0.002;  // radians: nearer a pole, lat-long lines fold
   static constexpr double kPolygonCost = 2048;
   static constexpr double kMaxEllipseAspect = 4;
 
@@ -374,7 +376,7 @@ class Quadrature {
   // follow (cap_spans() then).
   void slope_polygon() {
     const int n = std::clamp(static_cast<int>(std::ceil(extent_ / kSlopeVertexAngle / 4)) * 4,
-                             kOutline, kSlopeOutline / 2);
+                             kOutline, kSlopeOutlineStart);
     const double radius = reach_ / std::cos(kPi / n);  // circumscribed, as in ellipse_spans()
     // A window around a pole winds around it: the polygon is then closed along the pole's row
     // (theta = 0 or pi). A window around both would not wind: cap_spans() then.
@@ -386,7 +388,7 @@ class Quadrature {
     outline_[0] = Vec2(2 * kPi * uv.x(), kPi * uv.y());
     int count = 1;
     for (int k = 0; k < n; ++k)
-      if (!append_outline(2 * kPi * k / n, 2 * kPi * (k + 1) / n, radius, 6, count)) return;
+      if (!append_outline(2 * kPi * k / n, 2 * kPi * (k + 1) / n, radius, 10, count)) return;
     if (north || south) {  // the last point is the first one turn along: to the pole and back
       if (count + 3 > kSlopeOutline + 1) return;
       const double theta = north ? 0.0 : kPi;
