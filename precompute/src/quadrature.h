@@ -92,14 +92,14 @@ class Quadrature {
     // what is smooth at the scale of a node.
     const double wanted_step =
         std::min(shape.node_width / quality.texels_per_width, quality.max_node);
-    const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
+    peak_theta_ = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
     // Not a slope window over kMaxEllipseAspect times as long as wide either: ellipse_spans()
     // outlines it with kOutline points and widens it by the margin in its narrow deviations,
     // which lengthens it as much again. Ward 0.5 x 0.005 at 32 x 32 had accuracy ratios of
     // 0.52 / 0.79 that way, 0.033 / 0.047 through slope_spans().
-    ellipse_ = extent_ <= 1.0 && theta_p - 1.2 * extent_ > 0 && theta_p + 1.2 * extent_ < kPi &&
-               (!slopes_ || std::max(slopes_->sx, slopes_->sy) <=
-                                kMaxEllipseAspect * std::min(slopes_->sx, slopes_->sy));
+    ellipse_ =
+        ellipse_fits(0) && (!slopes_ || std::max(slopes_->sx, slopes_->sy) <=
+                                            kMaxEllipseAspect * std::min(slopes_->sx, slopes_->sy));
     // A slope window too long for ellipse_spans() is a polygon, which costs about as much as
     // kPolygonCost nodes: not worth it for a small cap.
     if (slopes_ && !ellipse_ && cap_area(extent_) > kPolygonCost * wanted_step * wanted_step)
@@ -341,6 +341,13 @@ class Quadrature {
     }
   }
 
+  // Whether the window's ellipse, `margin` wider, is small and far enough from the poles for
+  // ellipse_spans().
+  bool ellipse_fits(double margin) const {
+    const double extent = extent_ + margin;
+    return extent <= 1.0 && peak_theta_ - 1.2 * extent > 0 && peak_theta_ + 1.2 * extent < kPi;
+  }
+
   // Spans of a polygon around the window's ellipse (or the slope window's outline, then as wide
   // as the margin in its narrowest deviations) in grid coordinates (columns unwrapped around
   // the peak's), scan-converted row by row. False when the window is too wide or reaches a pole,
@@ -348,9 +355,7 @@ class Quadrature {
   bool ellipse_spans(double margin, QuadratureScratch& s) const {
     if (!ellipse_) return false;
     const double a = reach_ * major_width_ + margin, b = reach_ * minor_width_ + margin;
-    const double extent = extent_ + margin;
-    const double theta_p = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
-    if (extent > 1.0 || theta_p - 1.2 * extent <= 0 || theta_p + 1.2 * extent >= kPi) return false;
+    if (!ellipse_fits(margin)) return false;
     const double x_p = EnvMap::texcoord(peak_).x() * grid_w_;
     // Circumscribed: the polygon's edges stay outside the ellipse.
     const double grow = 1 / std::cos(kPi / kOutline);
@@ -486,7 +491,8 @@ class Quadrature {
 
   const EnvPyramid& env_;
   const Kernel& kernel_;
-  bool ellipse_;  // a window ellipse_spans() takes, margins aside
+  double peak_theta_;  // the peak's polar angle
+  bool ellipse_;       // a window ellipse_spans() takes, margins aside
   // slope_polygon(): points, their count (0: none), area and perimeter in (phi, theta) radians.
   std::array<Vec2, kSlopeOutline + 1> outline_;
   int outline_n_ = 0;

@@ -16,19 +16,17 @@ bool row_then_column(const RowSegment& a, const RowSegment& b) {
 // row whose segments reach across the grid's width (they would wrap onto each other) becomes
 // one segment of the whole row.
 void merge_rows(const std::vector<RowSegment>& pieces, int width, std::vector<RowSegment>& out) {
-  std::size_t row_begin = out.size();
+  const std::size_t first = out.size();
   for (const RowSegment& piece : pieces) {
-    if (out.size() > row_begin && out.back().row == piece.row && piece.x0 <= out.back().x1 + 1) {
+    if (out.size() > first && out.back().row == piece.row && piece.x0 <= out.back().x1 + 1)
       out.back().x1 = std::max(out.back().x1, piece.x1);
-      continue;
-    }
-    if (out.size() > row_begin && out.back().row != piece.row) row_begin = out.size();
-    out.push_back(piece);
+    else
+      out.push_back(piece);
   }
   // Rows reaching across the width, from the last backwards (erasing keeps earlier indices).
-  for (std::size_t end = out.size(); end > 0;) {
+  for (std::size_t end = out.size(); end > first;) {
     std::size_t begin = end - 1;
-    while (begin > 0 && out[begin - 1].row == out[end - 1].row) --begin;
+    while (begin > first && out[begin - 1].row == out[end - 1].row) --begin;
     if (out[end - 1].x1 - out[begin].x0 + 1 >= width) {
       out[begin].x1 = out[begin].x0 + width - 1;
       out.erase(out.begin() + static_cast<std::ptrdiff_t>(begin + 1),
@@ -67,8 +65,8 @@ int floor_int(double x) {
 
 }  // namespace
 
-std::size_t convex_polygon_rows(const Vec2* p, int n, const RowGrid& grid,
-                                std::vector<RowSegment>& out, PolygonScratch& s) {
+void convex_polygon_rows(const Vec2* p, int n, const RowGrid& grid, std::vector<RowSegment>& out,
+                         PolygonScratch& s) {
   double y_min = p[0].y(), y_max = p[0].y();
   for (int k = 1; k < n; ++k) y_min = std::min(y_min, p[k].y()), y_max = std::max(y_max, p[k].y());
   const int y0 = std::max(0, floor_int(y_min)), y1 = std::min(grid.height - 1, floor_int(y_max));
@@ -78,17 +76,14 @@ std::size_t convex_polygon_rows(const Vec2* p, int n, const RowGrid& grid,
     row.x0 = std::min(row.x0, floor_int(std::min(a, b)));
     row.x1 = std::max(row.x1, floor_int(std::max(a, b)));
   });
-  const std::size_t before = out.size();
   for (int y = y0; y <= y1; ++y) {
     const RowSegment& row = s.pieces[y - y0];
     if (row.x0 <= row.x1) out.push_back({y, row.x0, std::min(row.x1, row.x0 + grid.width - 1)});
   }
-  return out.size() - before;
 }
 
-std::size_t polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGrid& grid,
-                             std::vector<RowSegment>& out, PolygonScratch& s) {
-  const std::size_t before = out.size();
+void polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGrid& grid,
+                      std::vector<RowSegment>& out, PolygonScratch& s) {
   s.pieces.clear();
   s.crossings.clear();
   edge_rows(p, n, grid.height, [&](int y, double a, double b, double crossing) {
@@ -111,7 +106,7 @@ std::size_t polygon_segments(const Vec2* p, int n, int pad, double min_sin, cons
   std::sort(s.pieces.begin(), s.pieces.end(), row_then_column);
   if (pad == 0) {
     merge_rows(s.pieces, grid.width, out);
-    return out.size() - before;
+    return;
   }
   s.merged.clear();
   merge_rows(s.pieces, grid.width, s.merged);
@@ -128,7 +123,6 @@ std::size_t polygon_segments(const Vec2* p, int n, int pad, double min_sin, cons
   }
   std::sort(s.padded.begin(), s.padded.end(), row_then_column);
   merge_rows(s.padded, grid.width, out);
-  return out.size() - before;
 }
 
 }  // namespace brdfnav

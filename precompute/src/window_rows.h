@@ -31,13 +31,13 @@ struct RowGrid {
 // columns unwrapped, no self-intersections), then `pad` rows either side and `pad` nodes' angle
 // wider (pad / sin(theta) columns, with sin(theta) at least `min_sin`). A row that the polygon
 // crosses more than once gets a segment per crossing: a curved sliver does not fill the rows
-// between its ends. Returns the number of segments appended.
-std::size_t polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGrid& grid,
-                             std::vector<RowSegment>& out, PolygonScratch& scratch);
+// between its ends.
+void polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGrid& grid,
+                      std::vector<RowSegment>& out, PolygonScratch& scratch);
 
 // The same for a convex polygon without padding (one segment per row, from the leftmost to the
 // rightmost point of the edges crossing it), in a single pass.
-std::size_t convex_polygon_rows(const Vec2* p, int n, const RowGrid& grid,
-                                std::vector<RowSegment>& out, PolygonScratch& scratch);
+void convex_polygon_rows(const Vec2* p, int n, const RowGrid& grid, std::vector<RowSegment>& out,
+                         PolygonScratch& scratch);
 
 }  // namespace brdfnav
