@@ -37,6 +37,33 @@ double time_image(Renderer& renderer, const AccuracySetting& s, int repeats) {
   return elapsed.count() / repeats;
 }
 
+// The precompute's He images along eta (He::kEtaNodes at each He setting's sigma and tau): ms
+// per image rendered alone and rendered together in one pass (Renderer::specular of a span).
+void eta_batch_rows(Renderer& renderer, int repeats) {
+  std::printf("\n| he setting | ms per image, 5 etas alone | ... in one pass | ratio |\n");
+  std::printf("|---|---|---|---|\n");
+  auto ms_of = [&](auto&& render) {
+    const auto start = std::chrono::steady_clock::now();
+    for (int r = 0; r < repeats; ++r) render();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+               .count() /
+           (repeats * double(He::kEtaNodes.size()));
+  };
+  for (const AccuracySetting& s : accuracy_settings()) {
+    if (s.model != ModelId::he) continue;
+    std::vector<Lobe> lobes;
+    for (double eta : He::kEtaNodes)
+      lobes.push_back(make_lobe(s.model, std::vector<double>{s.params[0], s.params[1], eta}));
+    renderer.prepare(lobes.front());
+    const double alone = ms_of([&] {
+      for (const Lobe& l : lobes) renderer.specular(l);
+    });
+    const double together = ms_of([&] { renderer.specular(lobes); });
+    std::printf("| %s | %.1f | %.1f | %.2f |\n", s.name.c_str(), alone, together, together / alone);
+    std::fflush(stdout);
+  }
+}
+
 void run_render_bench(const BenchOptions& o) {
   const EnvMap env = load_env(o.scene);
   const Scene scene = load_scene(o.scene);
@@ -77,6 +104,7 @@ void run_render_bench(const BenchOptions& o) {
       if (wanted(s)) row(s);
     if (wanted(sliver_setting())) row(sliver_setting());
   }
+  if (o.model.empty() || o.model == "he") eta_batch_rows(renderer, o.repeats);
   std::printf("\n| model | mean ms per image (smooth, medium, rough) |\n|---|---|\n");
   for (const auto& [model, sum] : total_ms)
     std::printf("| %s | %.1f |\n", std::string(model_info(model).name).c_str(),

@@ -184,7 +184,6 @@ namespace {
 // horizon.
 constexpr double kMinCos = 1e-10;
 
-
 // Sampling: a Beckmann half-vector lobe (see sampling_slopes) mixed with a kWideFactor times wider
 // one, which covers the lobe's heavier tails (its Poisson components with m above g) and the
 // shapes that are not Beckmann-like (grazing views, where vz varies across the lobe).
@@ -279,27 +278,46 @@ Rgb He::Bound::eval(const Vec3& wi) const {
   return he.lobe(he.direction_terms(wi), wo);
 }
 
+void He::Bound::eval_etas(const Vec3& wi, std::span<const double> etas, Rgb* out) const {
+  if (wi.z() <= 0 || wo.w.z() <= 0) {
+    std::fill(out, out + etas.size(), Rgb::Zero());
+    return;
+  }
+  const LobeTerms t = he.lobe_terms(he.direction_terms(wi), wo);
+  for (std::size_t k = 0; k < etas.size(); ++k) out[k] = lobe_with_eta(t, etas[k]);
+}
+
 Rgb He::lobe(const DirectionTerms& i, const DirectionTerms& o) const {
+  return lobe_with_eta(lobe_terms(i, o), eta);
+}
+
+He::LobeTerms He::lobe_terms(const DirectionTerms& i, const DirectionTerms& o) const {
   // Every quantity below is computed symmetrically in (i, o): reciprocity holds to the bit.
   const double vx = i.w.x() + o.w.x(), vy = i.w.y() + o.w.y();
   const double vxy2 = vx * vx + vy * vy;
   const double vz = i.cos + o.cos;
   const double v2 = vxy2 + vz * vz;
-  // For unit wi, wo: wi.h = (1 + wi.wo) / |wi + wo| = |wi + wo| / 2 (no degenerate h needed).
-  const double fresnel = fresnel_dielectric(std::min(0.5 * std::sqrt(v2), 1.0), eta);
   const double sigma0 = effective_sigma(sigma, i.k + o.k, he_detail::tabulated_sigma0_ratio);
-  const double geometry = (v2 / vz) * (v2 / vz);
+  LobeTerms t;
+  // For unit wi, wo: wi.h = (1 + wi.wo) / |wi + wo| = |wi + wo| / 2 (no degenerate h needed).
+  t.fresnel_cos = std::min(0.5 * std::sqrt(v2), 1.0);
+  t.geometry = (v2 / vz) * (v2 / vz);
   // Products of an i and an o factor are formed first: commutative, hence bitwise symmetric.
-  const double shadowing = i.shadowing * o.shadowing;
-  const double cos_product = i.cos * o.cos;
-  const double common = fresnel * shadowing * geometry / (kPi * cos_product);
+  t.shadowing = i.shadowing * o.shadowing;
+  t.denominator = kPi * (i.cos * o.cos);
 
   // Per channel: g = (2 pi sigma0 vz / lambda)^2, t = pi^2 tau^2 vxy^2 / lambda^2 and D's prefactor
   // pi^2 tau^2 / (4 lambda^2).
   const double g_scale = (2.0 * kPi * sigma0 * vz) * (2.0 * kPi * sigma0 * vz);
   const double tau_scale = kPi * kPi * tau * tau;
   const Rgb sum = he_detail::distribution_sum_per_wavelength(g_scale, tau_scale * vxy2);
-  return common * (0.25 * tau_scale) * inv_lambda_squared() * sum;
+  t.distribution = (0.25 * tau_scale) * inv_lambda_squared() * sum;
+  return t;
+}
+
+Rgb He::lobe_with_eta(const LobeTerms& t, double eta) {
+  const double fresnel = fresnel_dielectric(t.fresnel_cos, eta);
+  return (fresnel * t.shadowing * t.geometry / t.denominator) * t.distribution;
 }
 
 Rgb He::mirror_weight(const Vec3& wo) const {

@@ -4,7 +4,9 @@
 
 #include <brdfnav/core/closure.h>
 
+#include <array>
 #include <optional>
+#include <span>
 #include <type_traits>
 #include <utility>
 
@@ -56,17 +58,33 @@ V zero() {
   else
     return V::Zero();
 }
+// ... or a batch of Rgbs, one per lobe of a batch rendered together (HeEtaKernel).
+template <int N>
+using Values = Eigen::Array<double, N, 1>;
 inline bool positive(double k) {
   return k > 0;
 }
-inline bool positive(const Rgb& k) {
+template <int N>
+bool positive(const Values<N>& k) {
   return (k > 0).any();
 }
 inline double max0(double k) {
   return std::max(k, 0.0);
 }
-inline Rgb max0(const Rgb& k) {
+template <int N>
+Values<N> max0(const Values<N>& k) {
   return k.cwiseMax(0);
+}
+// power * K, what the quadrature sums: an Rgb, or one Rgb per lobe of a batch.
+inline Rgb weighted(const Rgb& power, double k) {
+  return power * k;
+}
+inline Rgb weighted(const Rgb& power, const Rgb& k) {
+  return power * k;
+}
+template <int N>
+Values<N> weighted(const Rgb& power, const Values<N>& k) {
+  return power.replicate<N / 3, 1>() * k;
 }
 
 // Whether a lobe is the same in every channel (all but He's): its kernel is then a double, which
@@ -109,6 +127,31 @@ struct LobeKernel {
 
  private:
   decltype(bind_wo(std::declval<const L&>(), Vec3())) lobe;
+  Frame frame;
+};
+
+// He lobes that differ in eta alone, at most kEtaBatch of them, times the cosine: lobe k in
+// channels 3k..3k+2, the rest zero. Everything but the Fresnel factor is computed once per
+// direction; each lobe's channels equal LobeKernel<He>'s for it to the bit.
+inline constexpr int kEtaBatch = 5;
+struct HeEtaKernel {
+  using Value = Values<3 * kEtaBatch>;
+  HeEtaKernel(const He& lobe, std::span<const double> etas, const Frame& frame, const Vec3& wo)
+      : lobe(lobe.bind(wo)), etas(etas), frame(frame) {}
+
+  Value value(const Vec3& wi_world) const {
+    const Vec3 wi = frame.to_local(wi_world);
+    Value v = Value::Zero();
+    if (wi.z() <= 0) return v;
+    std::array<Rgb, kEtaBatch> each;
+    lobe.eval_etas(wi, etas, each.data());
+    for (std::size_t k = 0; k < etas.size(); ++k) v.segment<3>(3 * k) = each[k] * wi.z();
+    return v;
+  }
+
+ private:
+  He::Bound lobe;
+  std::span<const double> etas;
   Frame frame;
 };
 

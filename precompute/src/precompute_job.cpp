@@ -142,20 +142,51 @@ class Job {
     }
     progress("render", ++done, total);
     for (const ProfileGrid& g : p_.grids) {
-      for (std::size_t node = 0; node < g.grid.node_count(); ++node) {
-        const fs::path path = at(db::image_file(g.model, node));
-        if (!mine(unit++) || reusable_image(path)) {
-          ++reused;
-        } else {
-          const Material m = node_material(g.model, g.grid.node_values(node));
-          write_exr(renderer.specular(make_lobe(m.model, m.params)), path,
-                    image_metadata(renderer, &m));
+      for (const std::vector<std::size_t>& nodes : render_units(g)) {
+        std::vector<std::size_t> pending;
+        const bool assigned = mine(unit++);
+        for (std::size_t node : nodes) {
+          if (!assigned || reusable_image(at(db::image_file(g.model, node)))) {
+            ++reused;
+            progress("render", ++done, total);
+          } else {
+            pending.push_back(node);
+          }
         }
-        progress("render", ++done, total);
+        std::vector<Lobe> lobes;
+        for (std::size_t node : pending)
+          lobes.push_back(make_lobe(g.model, g.grid.node_values(node)));
+        const std::vector<Image> images = renderer.specular(lobes);
+        for (std::size_t k = 0; k < pending.size(); ++k) {
+          const Material m = node_material(g.model, g.grid.node_values(pending[k]));
+          write_exr(images[k], at(db::image_file(g.model, pending[k])),
+                    image_metadata(renderer, &m));
+          progress("render", ++done, total);
+        }
       }
     }
     log("render: " + std::to_string(total) + " images, " + std::to_string(reused) +
         (r_.shard_count > 1 ? " reused or left to other shards" : " reused"));
+  }
+
+  // The grid's nodes in units of work: the nodes whose lobes shares_quadrature() (He's along
+  // eta), which render together, else one node each; in the order of their first nodes.
+  static std::vector<std::vector<std::size_t>> render_units(const ProfileGrid& g) {
+    std::vector<Lobe> lobes;
+    for (std::size_t node = 0; node < g.grid.node_count(); ++node)
+      lobes.push_back(make_lobe(g.model, g.grid.node_values(node)));
+    std::vector<std::vector<std::size_t>> units;
+    std::vector<bool> placed(lobes.size(), false);
+    for (std::size_t first = 0; first < lobes.size(); ++first) {
+      if (placed[first]) continue;
+      units.push_back({first});
+      for (std::size_t node = first + 1; node < lobes.size(); ++node) {
+        if (placed[node] || !shares_quadrature(lobes[first], lobes[node])) continue;
+        units.back().push_back(node);
+        placed[node] = true;
+      }
+    }
+    return units;
   }
 
   bool mine(std::size_t unit) const {

@@ -32,30 +32,40 @@ struct AlwaysVisible {
 
 // Per-thread scratch space of the quadrature, reused from pixel to pixel.
 struct QuadratureScratch {
-  std::vector<RowSegment> segments;    // the window's nodes, row by row, left to right
-  std::vector<std::size_t> offsets;    // per segment: index of its first node below
-  std::vector<std::size_t> row_first;  // per row from the first segment's: its first segment
-  std::vector<double> grey;            // K per window node, for grey kernels
-  std::vector<Rgb> colour, power;      // K per window node for the others; power
+  std::vector<RowSegment> segments;       // the window's nodes, row by row, left to right
+  std::vector<std::size_t> offsets;       // per segment: index of its first node below
+  std::vector<std::size_t> row_first;     // per row from the first segment's: its first segment
+  std::vector<double> grey;               // K per window node, for grey kernels
+  std::vector<Rgb> colour, power;         // K per window node for RGB kernels; power
+  std::vector<HeEtaKernel::Value> batch;  // K per window node for batches of lobes
   PolygonScratch polygon;
 
   template <typename V>
   std::vector<V>& kernel() {
-    if constexpr (std::is_same_v<V, double>)
-      return grey;
-    else
-      return colour;
+    return kernel_of<V>(*this);
   }
   template <typename V>
   const std::vector<V>& kernel() const {
-    return const_cast<QuadratureScratch*>(this)->kernel<V>();
+    return kernel_of<V>(*this);
+  }
+
+ private:
+  template <typename V, typename Self>
+  static auto& kernel_of(Self& self) {
+    if constexpr (std::is_same_v<V, double>)
+      return self.grey;
+    else if constexpr (std::is_same_v<V, Rgb>)
+      return self.colour;
+    else
+      return self.batch;
   }
 };
 
 template <typename Kernel, typename Visible = AlwaysVisible>
 class Quadrature {
   using Value = typename Kernel::Value;
-  static constexpr int kOutline = 32;  // vertices of the window's outline
+  using Sum = decltype(weighted(Rgb(), Value()));  // Rgb, or one Rgb per lobe of a batch
+  static constexpr int kOutline = 32;              // vertices of the window's outline
   // ... of a slope window's: one per kSlopeVertexAngle of its extent (at most
   // kSlopeOutlineStart), then more where they are over kOutlineEdge apart in (phi, theta), as
   // near a pole, up to kSlopeOutline: straight lines in lat-long between them then stay close to
@@ -118,8 +128,8 @@ class Quadrature {
     node_angle_ = kPi / grid_h_;
   }
 
-  Rgb integrate(QuadratureScratch& scratch) const {
-    Rgb sum = window_sum(scratch);
+  Sum integrate(QuadratureScratch& scratch) const {
+    Sum sum = window_sum(scratch);
     for (const EnvPyramid::HotTexel& t : env_.hot()) sum += hot_sum(t);
     return sum;
   }
@@ -200,11 +210,11 @@ class Quadrature {
 
   // Pass 1 evaluates K at every node of the window's rows; pass 2 sums power * K with the
   // second-difference correction wherever a node has its four neighbours.
-  Rgb window_sum(QuadratureScratch& s) const {
+  Sum window_sum(QuadratureScratch& s) const {
     const double margin = 1.5 * node_angle_;
     s.segments.clear();
     if (!ellipse_spans(margin, s) && !slope_spans(margin, s)) cap_spans(margin, s.segments);
-    if (s.segments.empty()) return Rgb::Zero();  // a window between rows: no node at all
+    if (s.segments.empty()) return zero<Sum>();  // a window between rows: no node at all
     const int row_lo = s.segments.front().row, rows = s.segments.back().row - row_lo + 1;
     s.row_first.resize(rows + 1);
     for (std::size_t r = 0, g = 0; r <= static_cast<std::size_t>(rows); ++r) {
@@ -284,8 +294,8 @@ class Quadrature {
     return {s, s.row_first[r], s.row_first[r + 1], grid_w_};
   }
 
-  Rgb corrected_sum(QuadratureScratch& s) const {
-    Rgb sum = Rgb::Zero();
+  Sum corrected_sum(QuadratureScratch& s) const {
+    Sum sum = zero<Sum>();
     const std::vector<Value>& kernel = s.kernel<Value>();
     for (int r = 0; r + 1 < static_cast<int>(s.row_first.size()); ++r) {
       RowCursor up = row_cursor(s, r - 1), down = row_cursor(s, r + 1);
@@ -303,9 +313,9 @@ class Quadrature {
           if (u && d && (full || (j > 0 && j + 1 < n))) {
             const Value& left = k[j > 0 ? j - 1 : n - 1];
             const Value& right = k[j + 1 < n ? j + 1 : 0];
-            v = max0(v + (*u + *d + left + right - 4 * v) / 24);
+            v = max0(Value(v + (*u + *d + left + right - 4 * v) / 24));
           }
-          sum += power[j] * v;
+          sum += weighted(power[j], v);
         }
       }
     }
@@ -468,13 +478,13 @@ class Quadrature {
   // lobe's tails see lamps from afar, where the kernel falls fastest); whole farther out. Each
   // piece sits at the texel's centre moved along the tangents of theta and phi (exact to second
   // order in the texel's size) and carries an equal share of its solid angle.
-  Rgb hot_sum(const EnvPyramid::HotTexel& t) const {
+  Sum hot_sum(const EnvPyramid::HotTexel& t) const {
     // Beyond four times the window even a lamp 10^5 times the map's mean adds nothing: the
     // lobes fall at least like Gaussians of their width there (exp(-98) at the default reach).
     const double margin = env_.node_angle(0);
-    if (!in_window(t.centroid, margin, 4 * reach_)) return Rgb::Zero();
+    if (!in_window(t.centroid, margin, 4 * reach_)) return zero<Sum>();
     if (hot_split_ == 1 || !in_window(t.centroid, margin, 2 * reach_))
-      return t.radiance * (value(t.centroid) * t.solid_angle);
+      return weighted(t.radiance, Value(value(t.centroid) * t.solid_angle));
     const int w = env_.width(0), h = env_.height(0), n = hot_split_;
     const double theta = kPi * (t.y + 0.5) / h, phi = 2 * kPi * ((t.x + 0.5) / w - 0.5);
     const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
@@ -486,7 +496,7 @@ class Quadrature {
       for (int i = 0; i < n; ++i)
         sum += value((row + ((i + 0.5) - 0.5 * n) * d_phi * e_phi).normalized());
     }
-    return t.radiance * (sum * (t.solid_angle / (n * n)));
+    return weighted(t.radiance, Value(sum * (t.solid_angle / (n * n))));
   }
 
   const EnvPyramid& env_;

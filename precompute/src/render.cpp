@@ -120,9 +120,9 @@ struct Renderer::Impl {
   }
 
   // pixel(point, index, scratch) at every covered pixel, zero elsewhere.
-  template <typename Pixel>
-  std::vector<Rgb> pixel_values(Pixel pixel, const ProgressSink& progress) {
-    std::vector<Rgb> values(surface.points.size(), Rgb::Zero());
+  template <typename V = Rgb, typename Pixel>
+  std::vector<V> pixel_values(Pixel pixel, const ProgressSink& progress) {
+    std::vector<V> values(surface.points.size(), zero<V>());
     parallel_rows(resolution, threads(), progress, [&](int y, QuadratureScratch& s) {
       for (int x = 0; x < resolution; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * resolution + x;
@@ -132,21 +132,36 @@ struct Renderer::Impl {
     return values;
   }
 
-  // Image whose covered pixels hold pixel(point, index, scratch).
-  template <typename Pixel>
-  Image render_pass(Pixel pixel) {
-    const std::vector<Rgb> values = pixel_values(pixel, options.progress);
+  // Image whose covered pixels hold channels 3 lane .. 3 lane + 2 of `values`.
+  template <typename V>
+  Image image_of(const std::vector<V>& values, int lane = 0) const {
     Image image(resolution, resolution);
     for (int y = 0; y < resolution; ++y) {
       for (int x = 0; x < resolution; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * resolution + x;
         if (!surface.points[i].covered) continue;
         float* out = image.pixel(x, y);
-        for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(values[i][c]);
+        for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(values[i][3 * lane + c]);
         out[3] = 1.f;
       }
     }
     return image;
+  }
+
+  // Image whose covered pixels hold pixel(point, index, scratch).
+  template <typename Pixel>
+  Image render_pass(Pixel pixel) {
+    return image_of(pixel_values(pixel, options.progress));
+  }
+
+  // `horizon`: see Quadrature.
+  template <typename Kernel>
+  auto integrate(const Kernel& kernel, const KernelShape& shape, const Vec3& horizon,
+                 const SurfacePoint& p, QuadratureScratch& s) const {
+    if (scene.convex())
+      return Quadrature(pyramid, kernel, shape, horizon, options.quality).integrate(s);
+    auto visible = [&](const Vec3& w) { return !scene.occluded(p, w); };
+    return Quadrature(pyramid, kernel, shape, horizon, options.quality, visible).integrate(s);
   }
 
   // The environment filtered over each pixel's footprint around its mirror direction (no
@@ -160,16 +175,6 @@ struct Renderer::Impl {
                        Vec3::Zero(), p, s);
     };
     mirrored = pixel_values(lookup, {});
-  }
-
-  // `horizon`: see Quadrature.
-  template <typename Kernel>
-  Rgb integrate(const Kernel& kernel, const KernelShape& shape, const Vec3& horizon,
-                const SurfacePoint& p, QuadratureScratch& s) const {
-    if (scene.convex())
-      return Quadrature(pyramid, kernel, shape, horizon, options.quality).integrate(s);
-    auto visible = [&](const Vec3& w) { return !scene.occluded(p, w); };
-    return Quadrature(pyramid, kernel, shape, horizon, options.quality, visible).integrate(s);
   }
 
   Rgb diffuse_pixel(const SurfacePoint& p, QuadratureScratch& s) const {
@@ -188,6 +193,36 @@ struct Renderer::Impl {
     if constexpr (requires { lobe.mirror_weight(wo); })
       sum += lobe.mirror_weight(wo) * (*mirrored)[i];
     return sum;
+  }
+
+  // specular_pixel() of the He lobes `lobe` with eta = etas[k], k < kEtaBatch, in lane k.
+  HeEtaKernel::Value he_eta_pixel(const He& lobe, std::span<const double> etas,
+                                  const SurfacePoint& p, std::size_t i,
+                                  QuadratureScratch& s) const {
+    const Frame frame = pixel_frame(p);
+    const Vec3 wo = frame.to_local(kViewDirection);
+    if (wo.z() <= 0) return HeEtaKernel::Value::Zero();
+    const KernelShape shape = lobe_shape(lobe, wo).to_world(frame);  // eta does not shape it
+    HeEtaKernel::Value sum = integrate(HeEtaKernel(lobe, etas, frame, wo), shape, p.normal, p, s);
+    for (std::size_t k = 0; k < etas.size(); ++k) {
+      He each = lobe;
+      each.eta = etas[k];
+      sum.segment<3>(3 * static_cast<Eigen::Index>(k)) += each.mirror_weight(wo) * (*mirrored)[i];
+    }
+    return sum;
+  }
+
+  // specular() of each of `lobe` with eta = etas[k], in one pass.
+  std::vector<Image> he_eta_images(const He& lobe, std::span<const double> etas) {
+    compute_mirror_lookups();
+    const auto values = pixel_values<HeEtaKernel::Value>(
+        [&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
+          return he_eta_pixel(lobe, etas, p, i, s);
+        },
+        options.progress);
+    std::vector<Image> images;
+    for (std::size_t k = 0; k < etas.size(); ++k) images.push_back(image_of(values, int(k)));
+    return images;
   }
 };
 
@@ -234,6 +269,35 @@ Image Renderer::specular(const Lobe& lobe) {
         });
       },
       lobe);
+}
+
+bool shares_quadrature(const Lobe& a, const Lobe& b) {
+  const He* ha = std::get_if<He>(&a);
+  const He* hb = std::get_if<He>(&b);
+  return ha && hb && ha->sigma == hb->sigma && ha->tau == hb->tau;
+}
+
+std::vector<Image> Renderer::specular(std::span<const Lobe> lobes) {
+  std::vector<Image> images(lobes.size());
+  std::vector<bool> done(lobes.size(), false);
+  for (std::size_t first = 0; first < lobes.size(); ++first) {
+    if (done[first]) continue;
+    std::vector<std::size_t> batch{first};
+    for (std::size_t j = first + 1; j < lobes.size() && batch.size() < kEtaBatch; ++j)
+      if (!done[j] && shares_quadrature(lobes[first], lobes[j])) batch.push_back(j);
+    if (batch.size() == 1) {
+      images[first] = specular(lobes[first]);
+      continue;
+    }
+    std::vector<double> etas;
+    for (std::size_t j : batch) etas.push_back(std::get<He>(lobes[j]).eta);
+    std::vector<Image> rendered = impl_->he_eta_images(std::get<He>(lobes[first]), etas);
+    for (std::size_t k = 0; k < batch.size(); ++k) {
+      images[batch[k]] = std::move(rendered[k]);
+      done[batch[k]] = true;
+    }
+  }
+  return images;
 }
 
 Image Renderer::render(const Material& material) {

@@ -114,6 +114,26 @@ TEST(Render, HeImagesDoNotDependOnTheRenderersHistory) {
   EXPECT_EQ(prepared.specular(smooth).rgba, used.specular(smooth).rgba);
 }
 
+// The precompute renders He's lobes along eta in one pass (shares_quadrature()): each image is
+// the one specular() renders alone, to the bit, whatever else the batch holds; more lobes than a
+// pass takes (5) and lobes of other models or of another sigma come out in order.
+TEST(Render, HeLobesAlongEtaRenderTogetherToTheBit) {
+  const Scene sphere = Scene::sphere();
+  std::vector<Lobe> lobes;
+  for (double eta : {1.2, 1.5, 2.0, 4.0, 9.0, 1.01, 20.0})
+    lobes.push_back(make_lobe(ModelId::he, std::vector<double>{0.3, 6, eta}));
+  lobes.insert(lobes.begin() + 2, make_lobe(ModelId::ward, std::vector<double>{0.1, 0.2}));
+  lobes.insert(lobes.begin() + 4, make_lobe(ModelId::he, std::vector<double>{0.6, 6, 1.5}));
+  EXPECT_TRUE(shares_quadrature(lobes[0], lobes[1]));
+  EXPECT_FALSE(shares_quadrature(lobes[0], lobes[2]));
+  EXPECT_FALSE(shares_quadrature(lobes[0], lobes[4]));
+  Renderer together(interior(), sphere, 16), alone(interior(), sphere, 16);
+  const std::vector<Image> images = together.specular(lobes);
+  ASSERT_EQ(images.size(), lobes.size());
+  for (std::size_t k = 0; k < lobes.size(); ++k)
+    EXPECT_EQ(images[k].rgba, alone.specular(lobes[k]).rgba) << "lobe " << k;
+}
+
 // A hemispherical bowl open toward the camera: from its bottom, the rim hides every direction
 // below 45 degrees of elevation, so under a constant sky a Lambertian bottom receives
 // sin^2(45 deg) = 1/2 of what the sphere's centre does.

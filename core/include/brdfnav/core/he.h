@@ -39,6 +39,10 @@ struct He {
     const He& he;
     DirectionTerms wo;
     Rgb eval(const Vec3& wi) const;
+    // eval(wi) of the lobes that differ from `he` in eta alone, etas[k] for out[k]: all but the
+    // Fresnel factor computed once. out[k] equals He{sigma, tau, etas[k]}.bind(wo).eval(wi) to
+    // the bit.
+    void eval_etas(const Vec3& wi, std::span<const double> etas, Rgb* out) const;
   };
 
   // Directional-diffuse term only (the mirror term is a delta: see mirror_weight()).
@@ -55,9 +59,17 @@ struct He {
   Rgb mirror_weight(const Vec3& wo) const;
 
  private:
+  // The factors of the lobe at one (wi, wo) but the Fresnel one, which alone depends on eta.
+  struct LobeTerms {
+    double fresnel_cos;  // wi.h
+    double shadowing, geometry, denominator;
+    Rgb distribution;  // D's prefactor times its sum, per channel
+  };
   DirectionTerms direction_terms(const Vec3& w) const;
   // The lobe from both directions' terms, formed symmetrically: lobe(i, o) == lobe(o, i).
   Rgb lobe(const DirectionTerms& i, const DirectionTerms& o) const;
+  LobeTerms lobe_terms(const DirectionTerms& i, const DirectionTerms& o) const;
+  static Rgb lobe_with_eta(const LobeTerms& t, double eta);
 };
 
 // The sum over m in He's distribution D (without the pi^2 tau^2 / (4 lambda^2) prefactor), per

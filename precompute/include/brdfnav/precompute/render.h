@@ -17,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <vector>
 
 namespace brdfnav {
 
@@ -67,6 +68,9 @@ class Renderer {
   void prepare(const Lobe& lobe);
   // The lobe with rho_s = 1 (He's mirror term included).
   Image specular(const Lobe& lobe);
+  // specular() of each lobe, to the bit, in order. Lobes that shares_quadrature() are rendered
+  // together, up to five in a pass that costs little more than one of them.
+  std::vector<Image> specular(std::span<const Lobe> lobes);
   // rho_d * diffuse() + rho_s * specular(lobe); validates the material (MaterialError).
   Image render(const Material& material);
 
@@ -74,6 +78,11 @@ class Renderer {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// Whether the renderer integrates the two lobes over the same nodes at every pixel and can
+// render them together: He lobes that differ in eta alone (the Fresnel factor is all that
+// changes).
+bool shares_quadrature(const Lobe& a, const Lobe& b);
 
 // EXR header attributes recording how an image was made (material, env path and pixel hash,
 // scene, resolution, quality), for write_exr().
