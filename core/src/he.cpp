@@ -310,14 +310,15 @@ He::LobeTerms He::lobe_terms(const DirectionTerms& i, const DirectionTerms& o) c
   // pi^2 tau^2 / (4 lambda^2).
   const double g_scale = (2.0 * kPi * sigma0 * vz) * (2.0 * kPi * sigma0 * vz);
   const double tau_scale = kPi * kPi * tau * tau;
-  const Rgb sum = he_detail::distribution_sum_per_wavelength(g_scale, tau_scale * vxy2);
-  t.distribution = (0.25 * tau_scale) * inv_lambda_squared() * sum;
+  t.prefactor = 0.25 * tau_scale;
+  t.sum = he_detail::distribution_sum_per_wavelength(g_scale, tau_scale * vxy2);
   return t;
 }
 
 Rgb He::lobe_with_eta(const LobeTerms& t, double eta) {
   const double fresnel = fresnel_dielectric(t.fresnel_cos, eta);
-  return (fresnel * t.shadowing * t.geometry / t.denominator) * t.distribution;
+  const double common = fresnel * t.shadowing * t.geometry / t.denominator;
+  return common * t.prefactor * inv_lambda_squared() * t.sum;
 }
 
 Rgb He::mirror_weight(const Vec3& wo) const {

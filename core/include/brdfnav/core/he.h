@@ -63,7 +63,8 @@ struct He {
   struct LobeTerms {
     double fresnel_cos;  // wi.h
     double shadowing, geometry, denominator;
-    Rgb distribution;  // D's prefactor times its sum, per channel
+    double prefactor;  // of D, without 1 / lambda^2
+    Rgb sum;           // D's sum, per channel
   };
   DirectionTerms direction_terms(const Vec3& w) const;
   // The lobe from both directions' terms, formed symmetrically: lobe(i, o) == lobe(o, i).
