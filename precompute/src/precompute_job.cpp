@@ -175,18 +175,7 @@ class Job {
     std::vector<Lobe> lobes;
     for (std::size_t node = 0; node < g.grid.node_count(); ++node)
       lobes.push_back(make_lobe(g.model, g.grid.node_values(node)));
-    std::vector<std::vector<std::size_t>> units;
-    std::vector<bool> placed(lobes.size(), false);
-    for (std::size_t first = 0; first < lobes.size(); ++first) {
-      if (placed[first]) continue;
-      units.push_back({first});
-      for (std::size_t node = first + 1; node < lobes.size(); ++node) {
-        if (placed[node] || !shares_quadrature(lobes[first], lobes[node])) continue;
-        units.back().push_back(node);
-        placed[node] = true;
-      }
-    }
-    return units;
+    return quadrature_groups(lobes);
   }
 
   bool mine(std::size_t unit) const {

@@ -277,25 +277,33 @@ bool shares_quadrature(const Lobe& a, const Lobe& b) {
   return ha && hb && ha->sigma == hb->sigma && ha->tau == hb->tau;
 }
 
+std::vector<std::vector<std::size_t>> quadrature_groups(std::span<const Lobe> lobes,
+                                                        std::size_t max_size) {
+  std::vector<std::vector<std::size_t>> groups;
+  std::vector<bool> placed(lobes.size(), false);
+  for (std::size_t first = 0; first < lobes.size(); ++first) {
+    if (placed[first]) continue;
+    groups.push_back({first});
+    for (std::size_t j = first + 1; j < lobes.size() && groups.back().size() < max_size; ++j) {
+      if (placed[j] || !shares_quadrature(lobes[first], lobes[j])) continue;
+      groups.back().push_back(j);
+      placed[j] = true;
+    }
+  }
+  return groups;
+}
+
 std::vector<Image> Renderer::specular(std::span<const Lobe> lobes) {
   std::vector<Image> images(lobes.size());
-  std::vector<bool> done(lobes.size(), false);
-  for (std::size_t first = 0; first < lobes.size(); ++first) {
-    if (done[first]) continue;
-    std::vector<std::size_t> batch{first};
-    for (std::size_t j = first + 1; j < lobes.size() && batch.size() < kEtaBatch; ++j)
-      if (!done[j] && shares_quadrature(lobes[first], lobes[j])) batch.push_back(j);
-    if (batch.size() == 1) {
-      images[first] = specular(lobes[first]);
+  for (const std::vector<std::size_t>& group : quadrature_groups(lobes, kEtaBatch)) {
+    if (group.size() == 1) {
+      images[group[0]] = specular(lobes[group[0]]);
       continue;
     }
     std::vector<double> etas;
-    for (std::size_t j : batch) etas.push_back(std::get<He>(lobes[j]).eta);
-    std::vector<Image> rendered = impl_->he_eta_images(std::get<He>(lobes[first]), etas);
-    for (std::size_t k = 0; k < batch.size(); ++k) {
-      images[batch[k]] = std::move(rendered[k]);
-      done[batch[k]] = true;
-    }
+    for (std::size_t j : group) etas.push_back(std::get<He>(lobes[j]).eta);
+    std::vector<Image> rendered = impl_->he_eta_images(std::get<He>(lobes[group[0]]), etas);
+    for (std::size_t k = 0; k < group.size(); ++k) images[group[k]] = std::move(rendered[k]);
   }
   return images;
 }

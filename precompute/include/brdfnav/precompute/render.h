@@ -14,6 +14,7 @@
 #include <brdfnav/precompute/image.h>
 #include <brdfnav/precompute/scene.h>
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <span>
@@ -83,6 +84,10 @@ class Renderer {
 // render them together: He lobes that differ in eta alone (the Fresnel factor is all that
 // changes).
 bool shares_quadrature(const Lobe& a, const Lobe& b);
+// The lobes' indices in groups that shares_quadrature() with their first, of at most max_size,
+// in the order of their first indices.
+std::vector<std::vector<std::size_t>> quadrature_groups(std::span<const Lobe> lobes,
+                                                        std::size_t max_size = SIZE_MAX);
 
 // EXR header attributes recording how an image was made (material, env path and pixel hash,
 // scene, resolution, quality), for write_exr().
