@@ -1,28 +1,15 @@
 #include <brdfnav/thumbnails.h>
 
+#include <brdfnav/core/cube_root.h>
+
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <algorithm>
-#include <cstdint>
-#include <cstring>
 #include <vector>
 
 namespace brdfnav {
 
 namespace {
-
-// x^(1/3) for x >= 0 to float precision: a first guess from the bits (the exponent divided by 3,
-// within 4%) and three Newton steps, each squaring the error. Branch-free and inline, so the
-// blend's loop vectorises, where it would call libm's cbrtf 3 times per pixel and corner.
-inline float cube_root(float x) {
-  std::uint32_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  bits = bits / 3 + 0x2a5137a0u;
-  float y;
-  std::memcpy(&y, &bits, sizeof y);
-  for (int k = 0; k < 3; ++k) y = (2.f * y + x / (y * y)) * (1.f / 3.f);
-  return x > 0 ? y : 0.f;
-}
 
 // `image` resampled to `size` x `size` (OIIO's default filter); the mask is made 0/1 again.
 Image resampled(const Image& image, int size) {

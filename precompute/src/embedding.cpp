@@ -1,5 +1,7 @@
 #include <brdfnav/precompute/embedding.h>
 
+#include <brdfnav/core/cube_root.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -102,33 +104,31 @@ Embedding build_embedding(const Image& diffuse, const std::vector<ModelImages>& 
   // Column j of the data matrix: model by first_column, then (qi * nodes + node) * 3 + channel;
   // scaled by 1/sqrt(3 * pixels) so that Euclidean distance is the RMS metric.
   const float norm = 1.0f / std::sqrt(3.0f * static_cast<float>(covered.size()));
-  const auto column = [&](std::size_t j, Eigen::Ref<Eigen::VectorXf> out) {
+  const auto column = [&](std::size_t j, std::size_t first_row, Eigen::Ref<Eigen::VectorXf> out) {
     const std::size_t mi =
         std::upper_bound(first_column.begin(), first_column.end(), j) - first_column.begin() - 1;
     const std::size_t nodes = models[mi].grid.node_count(), local = j - first_column[mi];
     std::size_t image = local / 3 % nodes;
     for (std::size_t i = 0; i < mi; ++i) image += models[i].grid.node_count();
-    const double q = q_nodes[local / 3 / nodes];
+    const auto q = float(q_nodes[local / 3 / nodes]);
     const auto c = static_cast<Eigen::Index>(local % 3);
-    const Eigen::MatrixXf& s = spec[image];
+    const float* d = &id(static_cast<Eigen::Index>(first_row), c);
+    const float* s = &spec[image](static_cast<Eigen::Index>(first_row), c);
     for (Eigen::Index p = 0; p < out.size(); ++p)
-      out[p] = norm * std::cbrt(float(q) * id(p, c) + float(1 - q) * s(p, c));
+      out[p] = norm * cube_root(q * d[p] + (1 - q) * s[p]);
   };
-  const ColumnBlockSource source = [&](std::size_t first, Eigen::Ref<Eigen::MatrixXf> block) {
-    for (Eigen::Index b = 0; b < block.cols(); ++b) column(first + b, block.col(b));
+  const BlockSource source = [&](std::size_t first_row, std::size_t first_col,
+                                 Eigen::Ref<Eigen::MatrixXf> block) {
+    for (Eigen::Index b = 0; b < block.cols(); ++b) column(first_col + b, first_row, block.col(b));
   };
 
   Embedding e;
   e.basis = uncentered_pca(covered.size(), cols, source, options);
-  Eigen::VectorXf x(static_cast<Eigen::Index>(covered.size()));
   for (std::size_t mi = 0; mi < models.size(); ++mi) {
-    const std::size_t n = q_nodes.size() * models[mi].grid.node_count() * 3;
-    Eigen::MatrixXf coeffs(e.basis.vectors.cols(), static_cast<Eigen::Index>(n));
-    for (std::size_t j = 0; j < n; ++j) {
-      column(first_column[mi] + j, x);
-      coeffs.col(static_cast<Eigen::Index>(j)).noalias() = e.basis.vectors.transpose() * x;
-    }
-    e.models.emplace_back(models[mi].model, models[mi].grid, q_nodes, std::move(coeffs));
+    const auto n = static_cast<Eigen::Index>(q_nodes.size() * models[mi].grid.node_count() * 3);
+    e.models.emplace_back(
+        models[mi].model, models[mi].grid, q_nodes,
+        e.basis.coefficients.middleCols(static_cast<Eigen::Index>(first_column[mi]), n));
   }
   return e;
 }

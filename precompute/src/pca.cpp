@@ -1,5 +1,7 @@
 #include <brdfnav/precompute/pca.h>
 
+#include "parallel_for.h"
+
 #include <Eigen/QR>
 #include <Eigen/SVD>
 
@@ -12,17 +14,13 @@ namespace {
 
 using MatrixXf = Eigen::MatrixXf;
 
-// Calls `f(first, block)` for consecutive blocks of columns of the source matrix.
-template <typename F>
-void for_each_block(std::size_t rows, std::size_t cols, const ColumnBlockSource& source,
-                    std::size_t block_columns, F&& f) {
-  MatrixXf block;
-  for (std::size_t first = 0; first < cols; first += block_columns) {
-    const std::size_t n = std::min(block_columns, cols - first);
-    block.resize(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(n));
-    source(first, block);
-    f(first, block);
-  }
+Eigen::Index idx(std::size_t i) {
+  return static_cast<Eigen::Index>(i);
+}
+
+// Number of blocks of `size` that cover `n`.
+std::size_t blocks(std::size_t n, std::size_t size) {
+  return (n + size - 1) / size;
 }
 
 // Orthonormal basis of the column space of `y` (thin QR).
@@ -31,29 +29,41 @@ MatrixXf orthonormalise(const MatrixXf& y) {
   return qr.householderQ() * MatrixXf::Identity(y.rows(), y.cols());
 }
 
-// X * W, with W (cols x l) given; X streamed by blocks.
-MatrixXf times_right(std::size_t rows, std::size_t cols, const ColumnBlockSource& source,
+// X * W, with W (cols x l) given. Each slab of rows is one task: it streams its part of X block
+// by block of columns, always in the same blocks, and sums into its own rows of the result.
+MatrixXf times_right(std::size_t rows, std::size_t cols, const BlockSource& source,
                      const PcaOptions& o, const MatrixXf& w) {
-  MatrixXf y = MatrixXf::Zero(static_cast<Eigen::Index>(rows), w.cols());
-  for_each_block(rows, cols, source, o.block_columns, [&](std::size_t first, const MatrixXf& b) {
-    y.noalias() += b * w.middleRows(static_cast<Eigen::Index>(first), b.cols());
+  MatrixXf y = MatrixXf::Zero(idx(rows), w.cols());
+  parallel_for(blocks(rows, o.block_rows), worker_threads(o.threads), [&](std::size_t slab) {
+    const std::size_t first_row = slab * o.block_rows;
+    const std::size_t n = std::min(o.block_rows, rows - first_row);
+    MatrixXf block;
+    for (std::size_t first = 0; first < cols; first += o.block_columns) {
+      block.resize(idx(n), idx(std::min(o.block_columns, cols - first)));
+      source(first_row, first, block);
+      y.middleRows(idx(first_row), idx(n)).noalias() +=
+          block * w.middleRows(idx(first), block.cols());
+    }
   });
   return y;
 }
 
-// Q^T X (l x cols); X streamed by blocks.
-MatrixXf times_left(std::size_t rows, std::size_t cols, const ColumnBlockSource& source,
+// Q^T X (l x cols). Each block of columns is one task, whole in the rows.
+MatrixXf times_left(std::size_t rows, std::size_t cols, const BlockSource& source,
                     const PcaOptions& o, const MatrixXf& q) {
-  MatrixXf z(q.cols(), static_cast<Eigen::Index>(cols));
-  for_each_block(rows, cols, source, o.block_columns, [&](std::size_t first, const MatrixXf& b) {
-    z.middleCols(static_cast<Eigen::Index>(first), b.cols()).noalias() = q.transpose() * b;
+  MatrixXf z(q.cols(), idx(cols));
+  parallel_for(blocks(cols, o.block_columns), worker_threads(o.threads), [&](std::size_t b) {
+    const std::size_t first = b * o.block_columns;
+    MatrixXf block(idx(rows), idx(std::min(o.block_columns, cols - first)));
+    source(0, first, block);
+    z.middleCols(idx(first), block.cols()).noalias() = q.transpose() * block;
   });
   return z;
 }
 
 }  // namespace
 
-PcaBasis uncentered_pca(std::size_t rows, std::size_t cols, const ColumnBlockSource& source,
+PcaBasis uncentered_pca(std::size_t rows, std::size_t cols, const BlockSource& source,
                         const PcaOptions& options) {
   const auto k = static_cast<Eigen::Index>(
       std::min<std::size_t>({static_cast<std::size_t>(options.components), rows, cols}));
@@ -73,12 +83,15 @@ PcaBasis uncentered_pca(std::size_t rows, std::size_t cols, const ColumnBlockSou
     q = orthonormalise(times_right(rows, cols, source, options, z));
   }
 
-  // B = Q^T X is small (l x cols): its SVD gives the leading singular vectors of X.
+  // B = Q^T X is small (l x cols): its SVD B = U S V^T gives the leading singular vectors Q U of
+  // X, and X's coefficients in them, (Q U)^T X = U^T B, without another pass over X.
   const MatrixXf b = times_left(rows, cols, source, options, q);
   Eigen::BDCSVD<Eigen::MatrixXd> svd(b.cast<double>(), Eigen::ComputeThinU);
+  const MatrixXf u = svd.matrixU().leftCols(k).cast<float>();
   PcaBasis basis;
-  basis.vectors = q * svd.matrixU().leftCols(k).cast<float>();
+  basis.vectors = q * u;
   basis.singular_values = svd.singularValues().head(k);
+  basis.coefficients = u.transpose() * b;
   return basis;
 }
 

@@ -1,18 +1,16 @@
 // precompute_database(): the build of a database in three resumable phases (render, embed, fit)
 // and its atomic completion (manifest, rename).
 #include "database_format.h"
+#include "parallel_for.h"
 
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/precompute/render.h>
 
-#include <atomic>
 #include <chrono>
 #include <cstdio>
-#include <exception>
 #include <fstream>
 #include <mutex>
 #include <sstream>
-#include <thread>
 
 namespace brdfnav {
 
@@ -59,8 +57,7 @@ class Job {
         env_(env),
         scene_(scene),
         work_(request.out.string() + ".partial"),
-        threads_(request.threads > 0 ? request.threads
-                                     : int(std::max(1u, std::thread::hardware_concurrency()))) {}
+        threads_(worker_threads(request.threads)) {}
 
   void run() {
     prepare();
@@ -226,7 +223,9 @@ class Job {
     }
     progress("embedding", 0, 1);
     const std::vector<double> q = diffuse_fraction_nodes(p_.q_nodes);
-    const Embedding e = build_embedding(diffuse, images, q, p_.pca);
+    PcaOptions pca = p_.pca;
+    pca.threads = threads_;
+    const Embedding e = build_embedding(diffuse, images, q, pca);
     write_embedding(e);
     progress("embedding", 1, 1);
   }
@@ -302,10 +301,8 @@ class Job {
                  std::size_t& done, std::size_t total) const {
     const std::size_t nodes = a.grid().node_count(), cols = db::conversion_columns(b.model());
     db::Table t{std::uint32_t(nodes), std::uint32_t(cols), std::vector<float>(nodes * cols)};
-    std::atomic<std::size_t> next{0};
     std::mutex mutex;
-    std::exception_ptr failure;  // the first error of any thread, rethrown here
-    const auto fit_node = [&](std::size_t n) {
+    parallel_for(nodes, threads_, [&](std::size_t n) {
       const Material source = node_material(a.model(), a.grid().node_values(n));
       const LobeFit fit = fit_lobe(make_lobe(source.model, source.params), b.model(), p_.fit);
       const Material fitted = node_material(b.model(), fit.params, fit.scale);
@@ -317,23 +314,7 @@ class Job {
       row[cols - 1] = float(d);
       const std::lock_guard lock(mutex);
       progress("fits", ++done, total);
-    };
-    const auto worker = [&] {
-      for (std::size_t n = next++; n < nodes; n = next++) {
-        try {
-          fit_node(n);
-        } catch (...) {
-          const std::lock_guard lock(mutex);
-          if (!failure) failure = std::current_exception();
-          next = nodes;
-        }
-      }
-    };
-    std::vector<std::jthread> pool;
-    for (int i = 1; i < threads_; ++i) pool.emplace_back(worker);
-    worker();
-    pool.clear();
-    if (failure) std::rethrow_exception(failure);
+    });
     db::write_table(path, t);
   }
 

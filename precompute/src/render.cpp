@@ -1,6 +1,7 @@
 #include <brdfnav/precompute/render.h>
 
 #include "geometry.h"
+#include "parallel_for.h"
 #include "quadrature.h"
 
 #include <atomic>
@@ -114,10 +115,7 @@ struct Renderer::Impl {
     mirror_width = mirror_widths(surface, kPi / env.height());
   }
 
-  int threads() const {
-    if (options.threads > 0) return options.threads;
-    return std::max(1u, std::thread::hardware_concurrency());
-  }
+  int threads() const { return worker_threads(options.threads); }
 
   // pixel(point, index, scratch) at every covered pixel, zero elsewhere.
   template <typename V = Rgb, typename Pixel>

@@ -19,9 +19,10 @@ Eigen::MatrixXf low_rank_matrix(int rows, int cols, int rank, float noise, unsig
   return a * b + n;
 }
 
-ColumnBlockSource source_of(const Eigen::MatrixXf& m) {
-  return [&m](std::size_t first, Eigen::Ref<Eigen::MatrixXf> block) {
-    block = m.middleCols(static_cast<Eigen::Index>(first), block.cols());
+BlockSource source_of(const Eigen::MatrixXf& m) {
+  return [&m](std::size_t first_row, std::size_t first_col, Eigen::Ref<Eigen::MatrixXf> block) {
+    block = m.block(static_cast<Eigen::Index>(first_row), static_cast<Eigen::Index>(first_col),
+                    block.rows(), block.cols());
   };
 }
 
@@ -46,7 +47,9 @@ TEST(Pca, PreservesDistancesBetweenColumns) {
   PcaOptions o;
   o.components = 12;
   const PcaBasis basis = uncentered_pca(300, 200, source_of(m), o);
-  const Eigen::MatrixXf coeffs = basis.vectors.transpose() * m;
+  const Eigen::MatrixXf& coeffs = basis.coefficients;
+  ASSERT_EQ(coeffs.cols(), 200);
+  EXPECT_TRUE(coeffs.isApprox(basis.vectors.transpose() * m, 1e-4f));
   for (int a = 0; a < 200; a += 17)
     for (int b = a + 1; b < 200; b += 23) {
       const float exact = (m.col(a) - m.col(b)).norm();
@@ -62,6 +65,21 @@ TEST(Pca, IsDeterministicForASeed) {
   const PcaBasis a = uncentered_pca(120, 90, source_of(m), o);
   const PcaBasis b = uncentered_pca(120, 90, source_of(m), o);
   EXPECT_EQ(a.vectors, b.vectors);
+}
+
+// Blocks of rows and columns of a fixed size, whatever the threads: the same basis to the bit.
+TEST(Pca, DoesNotDependOnTheThreadCount) {
+  const Eigen::MatrixXf m = low_rank_matrix(700, 500, 30, 1e-2f, 5);
+  PcaOptions o;
+  o.components = 20;
+  o.block_rows = 128;  // several slabs of rows, one partial
+  o.block_columns = 96;
+  o.threads = 1;
+  const PcaBasis one = uncentered_pca(700, 500, source_of(m), o);
+  o.threads = 3;
+  const PcaBasis three = uncentered_pca(700, 500, source_of(m), o);
+  EXPECT_EQ(one.vectors, three.vectors);
+  EXPECT_EQ(one.coefficients, three.coefficients);
 }
 
 TEST(Pca, ClampsTheComponentCountToTheMatrix) {
