@@ -70,7 +70,7 @@ std::string refusal(const httplib::Request& req, int status) {
 
 // Every failure answers in the API's form: {"error": ...} with 400 for the client's mistakes.
 void add_error_handling(httplib::Server& server) {
-  server.set_payload_max_length(kMaxBodyBytes);
+  server.set_payload_max_length(kDrainedBodyBytes);
   using Handled = httplib::Server::HandlerResponse;
   server.set_error_handler(
       httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {

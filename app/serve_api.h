@@ -17,6 +17,10 @@ namespace brdfnav::cli {
 
 // The largest request body the API reads; a material or an export is a few kilobytes.
 inline constexpr std::size_t kMaxBodyBytes = 64 * 1024;
+// The largest body the server still reads to the end to refuse it with the API's 400: httplib
+// refuses a longer one from its Content-Length and closes the connection, which resets a client
+// still sending it (fetch then fails instead of reading the 400).
+inline constexpr std::size_t kDrainedBodyBytes = 16 * kMaxBodyBytes;
 
 struct ApiResponse {
   int status = 200;
