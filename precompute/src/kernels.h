@@ -92,8 +92,8 @@ Values<N> weighted(const Rgb& power, const Values<N>& k) {
 template <typename L>
 constexpr bool kGreyLobe = !std::is_same_v<L, He>;
 
-// A lobe seen from one wo: L::Bound where the lobe computes its wo terms once (He), else the
-// lobe and wo.
+// A lobe seen from one wo: L::Bound where the lobe computes its wo terms once (Ward, He), else
+// the lobe and wo.
 template <typename L>
 struct AtWo {
   const L& lobe;
@@ -116,8 +116,9 @@ struct LobeKernel {
   LobeKernel(const L& lobe, const Frame& frame, const Vec3& wo)
       : lobe(bind_wo(lobe, wo)), frame(frame) {}
 
-  Value value(const Vec3& wi_world) const {
-    const Vec3 wi = frame.to_local(wi_world);
+  Value value(const Vec3& wi_world) const { return value_local(frame.to_local(wi_world)); }
+  // ... at wi in the pixel's frame (the frame of the lobe's KernelShape::Slopes).
+  Value value_local(const Vec3& wi) const {
     if (wi.z() <= 0) return zero<Value>();
     if constexpr (kGreyLobe<L>)
       return lobe.eval(wi)[0] * wi.z();

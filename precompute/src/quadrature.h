@@ -176,7 +176,11 @@ class Quadrature {
 
   // Whether the half vector between w and wo is within `radius` deviations in slope space.
   bool within_slopes(const Vec3& w, double radius) const {
-    const Vec3 h = slopes_->frame.to_local(w) + slopes_->wo;
+    return within_local_slopes(slopes_->frame.to_local(w), radius);
+  }
+  // ... for w in the slopes' frame.
+  bool within_local_slopes(const Vec3& w, double radius) const {
+    const Vec3 h = w + slopes_->wo;
     if (h.z() <= 0) return false;
     const double u = h.x() / (h.z() * slopes_->sx), v = h.y() / (h.z() * slopes_->sy);
     return u * u + v * v <= radius * radius;
@@ -192,20 +196,34 @@ class Quadrature {
     return a * a + b * b <= reach * reach;
   }
 
-  Value value(const Vec3& w) const {
-    const Value k = kernel_.value(w);
-    if (!positive(k) || !visible_(w)) return zero<Value>();
-    return k;
+  Value value(const Vec3& w) const { return checked(kernel_.value(w), w); }
+  // K, or zero where it is not positive or the environment is hidden in direction w.
+  Value checked(const Value& k, const Vec3& w) const {
+    return positive(k) && visible_(w) ? k : zero<Value>();
   }
 
-  // Node (x, y) of the grid: a pyramid node, or a piece of a level-0 texel carrying an equal
-  // share of its power, at the piece's centre (st, ct: sine and cosine of the row's theta).
-  EnvNode grid_node(int x, int y, double st, double ct) const {
-    if (split_ == 1) return env_.node(level_, x, y);
+  // Whether w is in the window (`margin` wider), with K there in `k` (zero outside). A slope
+  // window is tested in the lobe's frame, which is the kernel's: a kernel that takes a local
+  // direction is handed it rather than transforming w again.
+  bool window_value(const Vec3& w, double margin, Value& k) const {
+    if constexpr (requires { kernel_.value_local(w); }) {
+      if (slopes_) {
+        const Vec3 local = slopes_->frame.to_local(w);
+        const bool inside = within_local_slopes(local, reach_ + margin * inv_minor_);
+        k = inside ? checked(kernel_.value_local(local), w) : zero<Value>();
+        return inside;
+      }
+    }
+    const bool inside = in_window(w, margin, reach_);
+    k = inside ? value(w) : zero<Value>();
+    return inside;
+  }
+
+  // Piece (x, y) of a level-0 texel (split_ > 1), carrying an equal share of its power, at the
+  // piece's centre: st, ct are the sine and cosine of the row's theta, sp, cp of the column's phi.
+  EnvNode piece(int x, int y, double st, double ct, double sp, double cp) const {
     const EnvNode texel = env_.node(0, x / split_, y / split_);
-    const double phi = 2 * kPi * ((x + 0.5) / grid_w_ - 0.5);
-    return {Vec3(-st * std::sin(phi), ct, st * std::cos(phi)),
-            texel.power / static_cast<double>(split_ * split_)};
+    return {Vec3(-st * sp, ct, st * cp), texel.power / static_cast<double>(split_ * split_)};
   }
 
   // Pass 1 evaluates K at every node of the window's rows; pass 2 sums power * K with the
@@ -235,16 +253,22 @@ class Quadrature {
     std::vector<Value>& kernel = s.kernel<Value>();
     kernel.resize(s.offsets[count]);
     s.power.resize(s.offsets[count]);
+    // Pieces step along a row by the angle `turn` in phi: their sine and cosine follow by that
+    // rotation rather than by a sincos per piece (a fifth of the time of a narrow anisotropic
+    // Ward lobe); the rounding drifts by a few 1e-12 at most over a row of 16384 pieces.
+    const double turn = 2 * kPi / grid_w_, sin_turn = std::sin(turn), cos_turn = std::cos(turn);
     for (std::size_t g = 0; g < count; ++g) {
       const auto [y, x0, x1] = s.segments[g];
       const double theta = (y + 0.5) * node_angle_;
       const double st = std::sin(theta), ct = std::cos(theta);
+      const double phi = 2 * kPi * ((wrap(x0) + 0.5) / grid_w_ - 0.5);
+      double sp = std::sin(phi), cp = std::cos(phi);
       std::size_t i = s.offsets[g];
       for (int xs = x0, x = wrap(x0); xs <= x1; ++xs, ++i, x = x + 1 == grid_w_ ? 0 : x + 1) {
-        const EnvNode n = grid_node(x, y, st, ct);
-        const bool inside = in_window(n.centroid, margin, reach_);
-        kernel[i] = inside ? value(n.centroid) : zero<Value>();
-        s.power[i] = inside ? n.power : Rgb::Zero();
+        const EnvNode n = split_ == 1 ? env_.node(level_, x, y) : piece(x, y, st, ct, sp, cp);
+        s.power[i] = window_value(n.centroid, margin, kernel[i]) ? n.power : Rgb::Zero();
+        const double next_sp = sp * cos_turn + cp * sin_turn;
+        cp = cp * cos_turn - sp * sin_turn, sp = next_sp;
       }
     }
   }

@@ -14,8 +14,7 @@ struct Ward {
   static constexpr std::string_view kName = "ward";
   static constexpr std::string_view kTitle = "Ward (anisotropic)";
   static constexpr std::array<ParamSpec, 2> kParams{{
-      {"alpha_x", "1", "RMS slope along the tangent x", 1e-4, 1.0, 0.1, 0.005, 0.5, 15,
-       Scale::log},
+      {"alpha_x", "1", "RMS slope along the tangent x", 1e-4, 1.0, 0.1, 0.005, 0.5, 15, Scale::log},
       {"alpha_y", "1", "RMS slope along the bitangent y", 1e-4, 1.0, 0.1, 0.005, 0.5, 15,
        Scale::log},
   }};
@@ -24,12 +23,23 @@ struct Ward {
 
   explicit Ward(std::span<const double> p) : alpha_x(p[0]), alpha_y(p[1]) {}
 
-  Rgb eval(const Vec3& wi, const Vec3& wo) const {
-    if (wi.z() <= 0 || wo.z() <= 0) return Rgb::Zero();
-    const Vec3 h = wi + wo;
-    const double value = gaussian(h) / (4 * kPi * alpha_x * alpha_y * std::sqrt(wi.z() * wo.z()));
-    return Rgb::Constant(value);
+  // eval() at one wo with wo's terms computed once, for many wi (the renderer's quadrature):
+  // bind(wo).eval(wi) is eval(wi, wo), which it computes.
+  struct Bound {
+    Vec3 wo;
+    double inv_alpha_x, inv_alpha_y;
+    double scale;  // 1 / (4 pi alpha_x alpha_y sqrt(cos_o)), 0 below the horizon
+    Rgb eval(const Vec3& wi) const {
+      if (wi.z() <= 0 || scale == 0) return Rgb::Zero();
+      return Rgb::Constant(gaussian(wi + wo, inv_alpha_x, inv_alpha_y) * scale / std::sqrt(wi.z()));
+    }
+  };
+  Bound bind(const Vec3& wo) const {
+    const double scale = wo.z() > 0 ? 1 / (4 * kPi * alpha_x * alpha_y * std::sqrt(wo.z())) : 0;
+    return {wo, 1 / alpha_x, 1 / alpha_y, scale};
   }
+
+  Rgb eval(const Vec3& wi, const Vec3& wo) const { return bind(wo).eval(wi); }
   std::optional<Vec3> sample(const Vec3& wo, const Vec2& u) const {
     const double phi0 = 2 * kPi * u[0];
     const double phi = std::atan2(alpha_y * std::sin(phi0), alpha_x * std::cos(phi0));
@@ -44,15 +54,16 @@ struct Ward {
     if (!h) return 0.0;
     const double cos_h = h->z(), wo_h = wo.dot(*h);
     if (cos_h <= 0 || wo_h <= 0) return 0.0;
-    return gaussian(*h) / (4 * kPi * alpha_x * alpha_y * wo_h * cos_h * cos_h * cos_h);
+    return gaussian(*h, 1 / alpha_x, 1 / alpha_y) /
+           (4 * kPi * alpha_x * alpha_y * wo_h * cos_h * cos_h * cos_h);
   }
   double albedo_hint(const Vec3& /*wo*/) const { return 1.0; }
 
  private:
   // exp(-((h.x/ax)^2 + (h.y/ay)^2) / h.z^2): scale-free in h.
-  double gaussian(const Vec3& h) const {
+  static double gaussian(const Vec3& h, double inv_alpha_x, double inv_alpha_y) {
     if (h.z() <= 0) return 0.0;
-    const double x = h.x() / alpha_x, y = h.y() / alpha_y;
+    const double x = h.x() * inv_alpha_x, y = h.y() * inv_alpha_y;
     return std::exp(-(x * x + y * y) / (h.z() * h.z()));
   }
 };
