@@ -122,6 +122,7 @@ class Quadrature {
                         quality.max_split);
     };
     split_ = level_ > 0 ? 1 : pieces_for(step);
+    piece_share_ = 1.0 / (split_ * split_);
     hot_split_ = pieces_for(shape.node_width / quality.hot_texels_per_width);
     grid_w_ = env.width(level_) * split_;
     grid_h_ = env.height(level_) * split_;
@@ -219,11 +220,10 @@ class Quadrature {
     return inside;
   }
 
-  // Piece (x, y) of a level-0 texel (split_ > 1), carrying an equal share of its power, at the
-  // piece's centre: st, ct are the sine and cosine of the row's theta, sp, cp of the column's phi.
-  EnvNode piece(int x, int y, double st, double ct, double sp, double cp) const {
-    const EnvNode texel = env_.node(0, x / split_, y / split_);
-    return {Vec3(-st * sp, ct, st * cp), texel.power / static_cast<double>(split_ * split_)};
+  // The piece of level-0 texel (tx, ty) at sines and cosines st, ct of its row's theta and sp,
+  // cp of its column's phi (split_ > 1): an equal share of the texel's power at its centre.
+  EnvNode piece(int tx, int ty, double st, double ct, double sp, double cp) const {
+    return {Vec3(-st * sp, ct, st * cp), env_.node(0, tx, ty).power * piece_share_};
   }
 
   // Pass 1 evaluates K at every node of the window's rows; pass 2 sums power * K with the
@@ -263,12 +263,16 @@ class Quadrature {
       const double st = std::sin(theta), ct = std::cos(theta);
       const double phi = 2 * kPi * ((wrap(x0) + 0.5) / grid_w_ - 0.5);
       double sp = std::sin(phi), cp = std::cos(phi);
+      // The texel of piece x is (tx, ty), x = tx * split_ + sub: counted, not divided, along.
+      const int ty = y / split_;
+      int tx = wrap(x0) / split_, sub = wrap(x0) % split_;
       std::size_t i = s.offsets[g];
       for (int xs = x0, x = wrap(x0); xs <= x1; ++xs, ++i, x = x + 1 == grid_w_ ? 0 : x + 1) {
-        const EnvNode n = split_ == 1 ? env_.node(level_, x, y) : piece(x, y, st, ct, sp, cp);
+        const EnvNode n = split_ == 1 ? env_.node(level_, x, y) : piece(tx, ty, st, ct, sp, cp);
         s.power[i] = window_value(n.centroid, margin, kernel[i]) ? n.power : Rgb::Zero();
         const double next_sp = sp * cos_turn + cp * sin_turn;
         cp = cp * cos_turn - sp * sin_turn, sp = next_sp;
+        if (++sub == split_) sub = 0, tx = tx + 1 == env_.width(0) ? 0 : tx + 1;
       }
     }
   }
@@ -536,6 +540,7 @@ class Quadrature {
   double extent_;  // largest angle between the peak and the window's edge
   double major_width_, minor_width_, inv_major_, inv_minor_, reach_, node_angle_;
   int level_, split_, hot_split_, grid_w_, grid_h_;
+  double piece_share_;  // 1 / split_^2: the share of a texel's power in each of its pieces
   Visible visible_;
 };
 

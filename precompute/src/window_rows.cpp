@@ -8,8 +8,24 @@ namespace brdfnav {
 
 namespace {
 
-bool row_then_column(const RowSegment& a, const RowSegment& b) {
-  return a.row != b.row ? a.row < b.row : a.x0 < b.x0;
+// Sorts `v` by row, then by first column: by counting the rows (a window's pieces are many over
+// few rows, and a comparison sort of them was a tenth of a sliver's time), then a sort within
+// each row. Pieces of a row with the same x0 may come in any order: merge_rows() then keeps the
+// largest x1 whatever the order.
+void sort_rows(std::vector<RowSegment>& v, PolygonScratch& s) {
+  if (v.empty()) return;
+  const auto [lo, hi] = std::minmax_element(
+      v.begin(), v.end(), [](const RowSegment& a, const RowSegment& b) { return a.row < b.row; });
+  const int first = lo->row, rows = hi->row - first + 1;
+  s.row_ends.assign(rows + 1, 0);
+  for (const RowSegment& seg : v) ++s.row_ends[seg.row - first + 1];
+  for (int r = 0; r < rows; ++r) s.row_ends[r + 1] += s.row_ends[r];  // now where each row starts
+  s.sorted.resize(v.size());
+  for (const RowSegment& seg : v) s.sorted[s.row_ends[seg.row - first]++] = seg;  // ... ends
+  for (int r = 0, begin = 0; r < rows; begin = s.row_ends[r++])
+    std::sort(s.sorted.begin() + begin, s.sorted.begin() + s.row_ends[r],
+              [](const RowSegment& a, const RowSegment& b) { return a.x0 < b.x0; });
+  v.swap(s.sorted);
 }
 
 // Appends `pieces` (sorted) to `out` with the overlapping and adjacent ones of a row merged; a
@@ -103,7 +119,7 @@ void polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGr
     s.pieces.push_back({row, floor_int(x0), floor_int(x1)});
     i += 2;
   }
-  std::sort(s.pieces.begin(), s.pieces.end(), row_then_column);
+  sort_rows(s.pieces, s);
   if (pad == 0) {
     merge_rows(s.pieces, grid.width, out);
     return;
@@ -111,17 +127,23 @@ void polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGr
   s.merged.clear();
   merge_rows(s.pieces, grid.width, s.merged);
   s.padded.clear();
-  for (const RowSegment& m : s.merged) {
+  if (s.merged.empty()) return;
+  // Columns are narrower by sin(theta): per row, the smallest over the rows the padding spans.
+  const int y_lo = std::max(0, s.merged.front().row - pad);
+  const int y_hi = std::min(grid.height - 1, s.merged.back().row + pad);
+  s.pad_columns.resize(y_hi - y_lo + 1);
+  for (int y = y_lo; y <= y_hi; ++y) {
+    const double sin_theta =
+        std::min(std::sin(std::max(y - pad, 0) * grid.node_angle),
+                 std::sin(std::min(y + 1 + pad, grid.height) * grid.node_angle));
+    s.pad_columns[y - y_lo] = static_cast<int>(std::ceil(pad / std::max(sin_theta, min_sin)));
+  }
+  for (const RowSegment& m : s.merged)
     for (int y = std::max(0, m.row - pad); y <= std::min(grid.height - 1, m.row + pad); ++y) {
-      // Columns are narrower by sin(theta): the smallest over the rows the padding spans.
-      const double sin_theta =
-          std::min(std::sin(std::max(y - pad, 0) * grid.node_angle),
-                   std::sin(std::min(y + 1 + pad, grid.height) * grid.node_angle));
-      const int columns = static_cast<int>(std::ceil(pad / std::max(sin_theta, min_sin)));
+      const int columns = s.pad_columns[y - y_lo];
       s.padded.push_back({y, m.x0 - columns, m.x1 + columns});
     }
-  }
-  std::sort(s.padded.begin(), s.padded.end(), row_then_column);
+  sort_rows(s.padded, s);
   merge_rows(s.padded, grid.width, out);
 }
 
