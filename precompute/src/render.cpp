@@ -180,34 +180,49 @@ struct Renderer::Impl {
                      p.normal, p, s);
   }
 
-  template <typename L>
-  Rgb specular_pixel(const L& lobe, const Lobe& any, const SurfacePoint& p, std::size_t i,
-                     QuadratureScratch& s) const {
+  // A lobe's integral at pixel p, in the pixel's frame and shaped as `shaping` at wo there, plus
+  // its mirror term: kernel(frame, wo) is the kernel, add_mirror(sum, wo) adds the mirror term
+  // to the sum.
+  template <typename Value, typename MakeKernel, typename AddMirror>
+  Value lobe_pixel(const Lobe& shaping, const SurfacePoint& p, QuadratureScratch& s,
+                   MakeKernel kernel, AddMirror add_mirror) const {
     const Frame frame = pixel_frame(p);
     const Vec3 wo = frame.to_local(kViewDirection);
-    if (wo.z() <= 0) return Rgb::Zero();
-    const KernelShape shape = lobe_shape(any, wo).to_world(frame);
-    Rgb sum = integrate(LobeKernel<L>(lobe, frame, wo), shape, p.normal, p, s);
-    if constexpr (requires { lobe.mirror_weight(wo); })
-      sum += lobe.mirror_weight(wo) * (*mirrored)[i];
+    if (wo.z() <= 0) return zero<Value>();
+    const KernelShape shape = lobe_shape(shaping, wo).to_world(frame);
+    Value sum = integrate(kernel(frame, wo), shape, p.normal, p, s);
+    add_mirror(sum, wo);
     return sum;
   }
 
-  // specular_pixel() of the He lobes `lobe` with eta = etas[k], k < kEtaBatch, in lane k.
+  template <typename L>
+  Rgb specular_pixel(const L& lobe, const Lobe& any, const SurfacePoint& p, std::size_t i,
+                     QuadratureScratch& s) const {
+    return lobe_pixel<Rgb>(
+        any, p, s,
+        [&](const Frame& frame, const Vec3& wo) { return LobeKernel<L>(lobe, frame, wo); },
+        [&](Rgb& sum, const Vec3& wo) {
+          if constexpr (requires { lobe.mirror_weight(wo); })
+            sum += lobe.mirror_weight(wo) * (*mirrored)[i];
+        });
+  }
+
+  // specular_pixel() of the He lobes `lobe` with eta = etas[k], k < kEtaBatch, in lane k (eta
+  // does not shape the lobe).
   HeEtaKernel::Value he_eta_pixel(const He& lobe, std::span<const double> etas,
                                   const SurfacePoint& p, std::size_t i,
                                   QuadratureScratch& s) const {
-    const Frame frame = pixel_frame(p);
-    const Vec3 wo = frame.to_local(kViewDirection);
-    if (wo.z() <= 0) return HeEtaKernel::Value::Zero();
-    const KernelShape shape = lobe_shape(lobe, wo).to_world(frame);  // eta does not shape it
-    HeEtaKernel::Value sum = integrate(HeEtaKernel(lobe, etas, frame, wo), shape, p.normal, p, s);
-    for (std::size_t k = 0; k < etas.size(); ++k) {
-      He each = lobe;
-      each.eta = etas[k];
-      sum.segment<3>(3 * static_cast<Eigen::Index>(k)) += each.mirror_weight(wo) * (*mirrored)[i];
-    }
-    return sum;
+    return lobe_pixel<HeEtaKernel::Value>(
+        lobe, p, s,
+        [&](const Frame& frame, const Vec3& wo) { return HeEtaKernel(lobe, etas, frame, wo); },
+        [&](HeEtaKernel::Value& sum, const Vec3& wo) {
+          for (std::size_t k = 0; k < etas.size(); ++k) {
+            He each = lobe;
+            each.eta = etas[k];
+            sum.segment<3>(3 * static_cast<Eigen::Index>(k)) +=
+                each.mirror_weight(wo) * (*mirrored)[i];
+          }
+        });
   }
 
   // specular() of each of `lobe` with eta = etas[k], in one pass.
