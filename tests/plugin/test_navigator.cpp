@@ -4,6 +4,7 @@
 // read back.
 #include "navigator_fixture.h"
 
+#include <brdfnav/core/cielab.h>
 #include <brdfnav/io/material_yaml.h>
 #include <brdfnav/io/navigation_yaml.h>
 #include <brdfnav/navigator.h>
@@ -143,17 +144,17 @@ TEST(Navigator, AMaterialAtTheEndOfItsGridStaysThereTowardTheEnd) {
 }
 
 TEST(Navigator, CielabOfReferenceColours) {
-  const Vec3 white = nav::rgb_to_lab(Rgb::Ones());
+  const Vec3 white = lab_from_rec709(Rgb::Ones());
   EXPECT_NEAR(white.x(), 100, 1e-9);
   EXPECT_NEAR(white.y(), 0, 1e-9);
   EXPECT_NEAR(white.z(), 0, 1e-9);
   // sRGB red: L*a*b* (53.24, 80.09, 67.20) (Lindbloom's calculator, D65).
-  const Vec3 red = nav::rgb_to_lab(Rgb(1, 0, 0));
+  const Vec3 red = lab_from_rec709(Rgb(1, 0, 0));
   EXPECT_NEAR(red.x(), 53.24, 0.01);
   EXPECT_NEAR(red.y(), 80.09, 0.01);
   EXPECT_NEAR(red.z(), 67.20, 0.01);
   const Rgb colour(0.3, 0.02, 4.5);
-  EXPECT_LT((nav::lab_to_rgb(nav::rgb_to_lab(colour)) - colour).abs().maxCoeff(), 1e-12);
+  EXPECT_LT((rec709_from_lab(lab_from_rec709(colour)) - colour).abs().maxCoeff(), 1e-12);
 }
 
 // Colour neighbours: at eps and valid, or clamped at the edge of the valid range (inside the
@@ -162,7 +163,7 @@ void expect_colour_tab(const Case& c, Tab tab) {
   const bool diffuse = tab == Tab::diffuse;
   const double max = diffuse ? kRhoDMax : kRhoSMax;
   const Rgb& before = diffuse ? c.material.rho_d : c.material.rho_s;
-  const Vec3 lab = nav::rgb_to_lab(before);
+  const Vec3 lab = lab_from_rec709(before);
   const std::vector<Neighbor> out = navigator().neighbors(c.material, c.radius, tab);
   ASSERT_EQ(out.size(), 10u);
   for (std::size_t i = 0; i < out.size(); ++i) {
@@ -171,7 +172,7 @@ void expect_colour_tab(const Case& c, Tab tab) {
     EXPECT_TRUE((after >= 0).all() && (after <= max).all()) << n.label;
     EXPECT_FALSE(n.at_boundary);
     expect_on_sphere(c, n, n.clamped);
-    const Vec3 step = nav::rgb_to_lab(after) - lab;
+    const Vec3 step = lab_from_rec709(after) - lab;
     if (step.norm() < 1e-6) continue;  // clamped at once: no direction to check
     if (i < 2) {
       EXPECT_EQ(n.label, i == 0 ? "L+" : "L-");

@@ -8,10 +8,6 @@
 
 namespace brdfnav::nav {
 
-// CIELAB (D65 white, Y of the white = 1) of linear Rec.709 RGB, and back.
-Vec3 rgb_to_lab(const Rgb& rgb);
-Rgb lab_to_rgb(const Vec3& lab);
-
 enum class ColourTerm { diffuse, specular };
 
 // Ten rays from the current colour of `term` in CIELAB: "L+", "L-" and the a-b plane every 45
