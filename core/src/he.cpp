@@ -278,7 +278,7 @@ Rgb He::Bound::eval(const Vec3& wi) const {
   return he.lobe(he.direction_terms(wi), wo);
 }
 
-void He::Bound::eval_etas(const Vec3& wi, std::span<const double> etas, Rgb* out) const {
+void He::Bound::eval_fresnel(const Vec3& wi, std::span<const double> etas, Rgb* out) const {
   if (wi.z() <= 0 || wo.w.z() <= 0) {
     std::fill(out, out + etas.size(), Rgb::Zero());
     return;

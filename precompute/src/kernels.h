@@ -58,7 +58,7 @@ V zero() {
   else
     return V::Zero();
 }
-// ... or a batch of Rgbs, one per lobe of a batch rendered together (HeEtaKernel).
+// ... or a batch of Rgbs, one per lobe of a batch rendered together (FresnelBatchKernel).
 template <int N>
 using Values = Eigen::Array<double, N, 1>;
 inline bool positive(double k) {
@@ -131,28 +131,40 @@ struct LobeKernel {
   Frame frame;
 };
 
-// He lobes that differ in eta alone, at most kEtaBatch of them, times the cosine: lobe k in
-// channels 3k..3k+2, the rest zero. Everything but the Fresnel factor is computed once per
-// direction; each lobe's channels equal LobeKernel<He>'s for it to the bit.
-inline constexpr int kEtaBatch = 5;
-struct HeEtaKernel {
-  using Value = Values<3 * kEtaBatch>;
-  HeEtaKernel(const He& lobe, std::span<const double> etas, const Frame& frame, const Vec3& wo)
-      : lobe(lobe.bind(wo)), etas(etas), frame(frame) {}
+// The parameter of the lobes that a batch rendered together varies: the one the Fresnel factor
+// alone depends on (He's eta, Cook-Torrance's f0), or none.
+template <typename L>
+inline constexpr double L::*kFresnelParameter = nullptr;
+template <>
+inline constexpr double He::*kFresnelParameter<He> = &He::eta;
+template <>
+inline constexpr double CookTorrance::*kFresnelParameter<CookTorrance> = &CookTorrance::f0;
+
+// Lobes that differ in kFresnelParameter alone, at most kFresnelBatch of them, times the cosine:
+// lobe k in channels 3k..3k+2, the rest zero. Everything but the Fresnel factor is computed once
+// per direction; each lobe's channels equal LobeKernel's for it to the bit.
+inline constexpr int kFresnelBatch = 5;
+using BatchValue = Values<3 * kFresnelBatch>;
+template <typename L>
+struct FresnelBatchKernel {
+  using Value = BatchValue;
+  FresnelBatchKernel(const L& lobe, std::span<const double> params, const Frame& frame,
+                     const Vec3& wo)
+      : lobe(lobe.bind(wo)), params(params), frame(frame) {}
 
   Value value(const Vec3& wi_world) const {
     const Vec3 wi = frame.to_local(wi_world);
     Value v = Value::Zero();
     if (wi.z() <= 0) return v;
-    std::array<Rgb, kEtaBatch> each;
-    lobe.eval_etas(wi, etas, each.data());
-    for (std::size_t k = 0; k < etas.size(); ++k) v.segment<3>(3 * k) = each[k] * wi.z();
+    std::array<Rgb, kFresnelBatch> each;
+    lobe.eval_fresnel(wi, params, each.data());
+    for (std::size_t k = 0; k < params.size(); ++k) v.segment<3>(3 * k) = each[k] * wi.z();
     return v;
   }
 
  private:
-  He::Bound lobe;
-  std::span<const double> etas;
+  typename L::Bound lobe;
+  std::span<const double> params;
   Frame frame;
 };
 

@@ -167,7 +167,8 @@ class Job {
   }
 
   // The grid's nodes in units of work: the nodes whose lobes shares_quadrature() (He's along
-  // eta), which render together, else one node each; in the order of their first nodes.
+  // eta, Cook-Torrance's along f0), which render together, else one node each; in the order of
+  // their first nodes.
   static std::vector<std::vector<std::size_t>> render_units(const ProfileGrid& g) {
     std::vector<Lobe> lobes;
     for (std::size_t node = 0; node < g.grid.node_count(); ++node)

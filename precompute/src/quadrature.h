@@ -32,12 +32,12 @@ struct AlwaysVisible {
 
 // Per-thread scratch space of the quadrature, reused from pixel to pixel.
 struct QuadratureScratch {
-  std::vector<RowSegment> segments;       // the window's nodes, row by row, left to right
-  std::vector<std::size_t> offsets;       // per segment: index of its first node below
-  std::vector<std::size_t> row_first;     // per row from the first segment's: its first segment
-  std::vector<double> grey;               // K per window node, for grey kernels
-  std::vector<Rgb> colour, power;         // K per window node for RGB kernels; power
-  std::vector<HeEtaKernel::Value> batch;  // K per window node for batches of lobes
+  std::vector<RowSegment> segments;    // the window's nodes, row by row, left to right
+  std::vector<std::size_t> offsets;    // per segment: index of its first node below
+  std::vector<std::size_t> row_first;  // per row from the first segment's: its first segment
+  std::vector<double> grey;            // K per window node, for grey kernels
+  std::vector<Rgb> colour, power;      // K per window node for RGB kernels; power
+  std::vector<BatchValue> batch;       // K per window node for batches of lobes
   PolygonScratch polygon;
 
   template <typename V>

@@ -207,34 +207,38 @@ struct Renderer::Impl {
         });
   }
 
-  // specular_pixel() of the He lobes `lobe` with eta = etas[k], k < kEtaBatch, in lane k (eta
-  // does not shape the lobe).
-  HeEtaKernel::Value he_eta_pixel(const He& lobe, std::span<const double> etas,
-                                  const SurfacePoint& p, std::size_t i,
-                                  QuadratureScratch& s) const {
-    return lobe_pixel<HeEtaKernel::Value>(
+  // specular_pixel() of the lobes `lobe` with its kFresnelParameter = params[k] in lane k, k <
+  // kFresnelBatch (that parameter does not shape the lobe).
+  template <typename L>
+  BatchValue batch_pixel(const L& lobe, std::span<const double> params, const SurfacePoint& p,
+                         std::size_t i, QuadratureScratch& s) const {
+    return lobe_pixel<BatchValue>(
         lobe, p, s,
-        [&](const Frame& frame, const Vec3& wo) { return HeEtaKernel(lobe, etas, frame, wo); },
-        [&](HeEtaKernel::Value& sum, const Vec3& wo) {
-          for (std::size_t k = 0; k < etas.size(); ++k) {
-            He each = lobe;
-            each.eta = etas[k];
-            sum.segment<3>(3 * static_cast<Eigen::Index>(k)) +=
-                each.mirror_weight(wo) * (*mirrored)[i];
-          }
+        [&](const Frame& frame, const Vec3& wo) {
+          return FresnelBatchKernel<L>(lobe, params, frame, wo);
+        },
+        [&](BatchValue& sum, const Vec3& wo) {
+          if constexpr (requires { lobe.mirror_weight(wo); })
+            for (std::size_t k = 0; k < params.size(); ++k) {
+              L each = lobe;
+              each.*kFresnelParameter<L> = params[k];
+              sum.segment<3>(3 * static_cast<Eigen::Index>(k)) +=
+                  each.mirror_weight(wo) * (*mirrored)[i];
+            }
         });
   }
 
-  // specular() of each of `lobe` with eta = etas[k], in one pass.
-  std::vector<Image> he_eta_images(const He& lobe, std::span<const double> etas) {
-    compute_mirror_lookups();
-    const auto values = pixel_values<HeEtaKernel::Value>(
+  // specular() of each of `lobe` with kFresnelParameter = params[k], in one pass.
+  template <typename L>
+  std::vector<Image> batch_images(const L& lobe, std::span<const double> params) {
+    if constexpr (std::is_same_v<L, He>) compute_mirror_lookups();
+    const auto values = pixel_values<BatchValue>(
         [&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
-          return he_eta_pixel(lobe, etas, p, i, s);
+          return batch_pixel(lobe, params, p, i, s);
         },
         options.progress);
     std::vector<Image> images;
-    for (std::size_t k = 0; k < etas.size(); ++k) images.push_back(image_of(values, int(k)));
+    for (std::size_t k = 0; k < params.size(); ++k) images.push_back(image_of(values, int(k)));
     return images;
   }
 };
@@ -285,9 +289,11 @@ Image Renderer::specular(const Lobe& lobe) {
 }
 
 bool shares_quadrature(const Lobe& a, const Lobe& b) {
-  const He* ha = std::get_if<He>(&a);
-  const He* hb = std::get_if<He>(&b);
-  return ha && hb && ha->sigma == hb->sigma && ha->tau == hb->tau;
+  if (const He* ha = std::get_if<He>(&a), *hb = std::get_if<He>(&b); ha && hb)
+    return ha->sigma == hb->sigma && ha->tau == hb->tau;
+  if (const auto* ca = std::get_if<CookTorrance>(&a), *cb = std::get_if<CookTorrance>(&b); ca && cb)
+    return ca->m == cb->m;
+  return false;
 }
 
 std::vector<std::vector<std::size_t>> quadrature_groups(std::span<const Lobe> lobes,
@@ -308,14 +314,24 @@ std::vector<std::vector<std::size_t>> quadrature_groups(std::span<const Lobe> lo
 
 std::vector<Image> Renderer::specular(std::span<const Lobe> lobes) {
   std::vector<Image> images(lobes.size());
-  for (const std::vector<std::size_t>& group : quadrature_groups(lobes, kEtaBatch)) {
+  for (const std::vector<std::size_t>& group : quadrature_groups(lobes, kFresnelBatch)) {
     if (group.size() == 1) {
       images[group[0]] = specular(lobes[group[0]]);
       continue;
     }
-    std::vector<double> etas;
-    for (std::size_t j : group) etas.push_back(std::get<He>(lobes[j]).eta);
-    std::vector<Image> rendered = impl_->he_eta_images(std::get<He>(lobes[group[0]]), etas);
+    std::vector<Image> rendered = std::visit(
+        [&](const auto& first) -> std::vector<Image> {
+          using L = std::decay_t<decltype(first)>;
+          if constexpr (kFresnelParameter<L> != nullptr) {
+            std::vector<double> params;
+            for (std::size_t j : group)
+              params.push_back(std::get<L>(lobes[j]).*kFresnelParameter<L>);
+            return impl_->batch_images(first, params);
+          } else {
+            throw std::logic_error("shares_quadrature() grouped lobes without a Fresnel parameter");
+          }
+        },
+        lobes[group[0]]);
     for (std::size_t k = 0; k < group.size(); ++k) images[group[k]] = std::move(rendered[k]);
   }
   return images;

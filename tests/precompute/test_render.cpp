@@ -134,6 +134,26 @@ TEST(Render, HeLobesAlongEtaRenderTogetherToTheBit) {
     EXPECT_EQ(images[k].rgba, alone.specular(lobes[k]).rgba) << "lobe " << k;
 }
 
+// ... and Cook-Torrance's along f0, f0 = 0 (a lane that is zero where the others are not)
+// included.
+TEST(Render, CookTorranceLobesAlongF0RenderTogetherToTheBit) {
+  const Scene sphere = Scene::sphere();
+  std::vector<Lobe> lobes;
+  for (double f0 : {0.02, 0.1, 0.0, 0.5, 1.0, 0.04})
+    lobes.push_back(make_lobe(ModelId::cook_torrance, std::vector<double>{f0, 0.2}));
+  lobes.insert(lobes.begin() + 3,
+               make_lobe(ModelId::cook_torrance, std::vector<double>{0.1, 0.05}));
+  EXPECT_TRUE(shares_quadrature(lobes[0], lobes[1]));
+  EXPECT_FALSE(shares_quadrature(lobes[0], lobes[3]));
+  EXPECT_FALSE(
+      shares_quadrature(lobes[0], make_lobe(ModelId::he, std::vector<double>{0.3, 6, 1.5})));
+  Renderer together(interior(), sphere, 16), alone(interior(), sphere, 16);
+  const std::vector<Image> images = together.specular(lobes);
+  ASSERT_EQ(images.size(), lobes.size());
+  for (std::size_t k = 0; k < lobes.size(); ++k)
+    EXPECT_EQ(images[k].rgba, alone.specular(lobes[k]).rgba) << "lobe " << k;
+}
+
 // A hemispherical bowl open toward the camera: from its bottom, the rim hides every direction
 // below 45 degrees of elevation, so under a constant sky a Lambertian bottom receives
 // sin^2(45 deg) = 1/2 of what the sphere's centre does.

@@ -42,7 +42,7 @@ struct He {
     // eval(wi) of the lobes that differ from `he` in eta alone, etas[k] for out[k]: all but the
     // Fresnel factor computed once. out[k] equals He{sigma, tau, etas[k]}.bind(wo).eval(wi) to
     // the bit.
-    void eval_etas(const Vec3& wi, std::span<const double> etas, Rgb* out) const;
+    void eval_fresnel(const Vec3& wi, std::span<const double> etas, Rgb* out) const;
   };
 
   // Directional-diffuse term only (the mirror term is a delta: see mirror_weight()).

@@ -81,8 +81,8 @@ class Renderer {
 };
 
 // Whether the renderer integrates the two lobes over the same nodes at every pixel and can
-// render them together: He lobes that differ in eta alone (the Fresnel factor is all that
-// changes).
+// render them together: He lobes that differ in eta alone, Cook-Torrance lobes in f0 alone (the
+// Fresnel factor is all that changes).
 bool shares_quadrature(const Lobe& a, const Lobe& b);
 // The lobes' indices in groups that shares_quadrature() with their first, of at most max_size,
 // in the order of their first indices.
