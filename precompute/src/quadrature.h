@@ -261,18 +261,24 @@ class Quadrature {
       const auto [y, x0, x1] = s.segments[g];
       const double theta = (y + 0.5) * node_angle_;
       const double st = std::sin(theta), ct = std::cos(theta);
-      const double phi = 2 * kPi * ((wrap(x0) + 0.5) / grid_w_ - 0.5);
+      const int first = wrap(x0);
+      const double phi = 2 * kPi * ((first + 0.5) / grid_w_ - 0.5);
       double sp = std::sin(phi), cp = std::cos(phi);
       // The texel of piece x is (tx, ty), x = tx * split_ + sub: counted, not divided, along.
       const int ty = y / split_;
-      int tx = wrap(x0) / split_, sub = wrap(x0) % split_;
+      int tx = first / split_, sub = first % split_;
       std::size_t i = s.offsets[g];
-      for (int xs = x0, x = wrap(x0); xs <= x1; ++xs, ++i, x = x + 1 == grid_w_ ? 0 : x + 1) {
-        const EnvNode n = split_ == 1 ? env_.node(level_, x, y) : piece(tx, ty, st, ct, sp, cp);
+      for (int xs = x0, x = first; xs <= x1; ++xs, ++i, x = x + 1 == grid_w_ ? 0 : x + 1) {
+        EnvNode n;
+        if (split_ == 1) {
+          n = env_.node(level_, x, y);
+        } else {  // the piece, then on to the next one's angle and texel
+          n = piece(tx, ty, st, ct, sp, cp);
+          const double next_sp = sp * cos_turn + cp * sin_turn;
+          cp = cp * cos_turn - sp * sin_turn, sp = next_sp;
+          if (++sub == split_) sub = 0, tx = tx + 1 == env_.width(0) ? 0 : tx + 1;
+        }
         s.power[i] = window_value(n.centroid, margin, kernel[i]) ? n.power : Rgb::Zero();
-        const double next_sp = sp * cos_turn + cp * sin_turn;
-        cp = cp * cos_turn - sp * sin_turn, sp = next_sp;
-        if (++sub == split_) sub = 0, tx = tx + 1 == env_.width(0) ? 0 : tx + 1;
       }
     }
   }

@@ -17,8 +17,9 @@ namespace brdfnav {
 inline float cube_root(float x) {
   std::int32_t bits;
   std::memcpy(&bits, &x, sizeof bits);
-  bits &= ~(bits >> 31);                                          // negative x -> +0
-  const std::int32_t tiny = bits<0x00800000, positive = bits> 0;  // 0 or 1
+  bits &= ~(bits >> 31);  // negative x -> +0
+  // 0 or 1 each: x is subnormal or 0, x is positive.
+  const std::int32_t tiny = (bits < 0x00800000), positive = (bits > 0);
   std::memcpy(&x, &bits, sizeof bits);
   const float scaled = x * (1.f + float(tiny) * (0x1p24f - 1.f));
   std::memcpy(&bits, &scaled, sizeof bits);
