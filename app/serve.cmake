@@ -14,6 +14,12 @@ add_custom_command(OUTPUT ${web_cpp}
   DEPENDS ${web_deps} ${PROJECT_SOURCE_DIR}/cmake/embed_web.cmake
   COMMENT "Embedding app/web into brdfnav" VERBATIM)
 
-target_sources(brdfnav_cli PRIVATE cmd_serve.cpp serve_api.cpp ${web_cpp})
-target_include_directories(brdfnav_cli PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(brdfnav_cli PRIVATE PkgConfig::brdfnav_httplib nlohmann_json::nlohmann_json)
+# The request handling on its own, compiled once for the server and the fuzzer of tests/fuzz.
+add_library(brdfnav_serve_api STATIC serve_api.cpp)
+target_include_directories(brdfnav_serve_api PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(brdfnav_serve_api PUBLIC brdfnav::navigator brdfnav::ocio
+                      PRIVATE brdfnav_io nlohmann_json::nlohmann_json OpenImageIO::OpenImageIO)
+
+target_sources(brdfnav_cli PRIVATE cmd_serve.cpp ${web_cpp})
+target_link_libraries(brdfnav_cli PRIVATE brdfnav_serve_api PkgConfig::brdfnav_httplib
+                                          nlohmann_json::nlohmann_json)

@@ -1,9 +1,10 @@
 # Sanitized builds, for `./run check` and `./run fuzz` (docs/RELIABILITY.md).
 #   BRDFNAV_SANITIZE=address,undefined or thread: every target is built and linked with it.
-#   BRDFNAV_FUZZ=ON (clang): ASan + UBSan, and libFuzzer's coverage instrumentation in every
-#   library, so the fuzzers of tests/fuzz see the branches of the code they feed.
+#   BRDFNAV_FUZZ=ON (clang): ASan + UBSan, libFuzzer's coverage instrumentation in every target, so
+#   the fuzzers of tests/fuzz see the branches of the code they feed, and those fuzzers beside the
+#   test suite: one tree serves `./run check` and `./run fuzz`.
 set(BRDFNAV_SANITIZE "" CACHE STRING "Sanitizers for every target (-fsanitize=...), e.g. address,undefined")
-option(BRDFNAV_FUZZ "Build only the libraries the fuzzers need and the fuzzers (clang)" OFF)
+option(BRDFNAV_FUZZ "Build the libFuzzer targets too, with ASan + UBSan (clang)" OFF)
 
 if(BRDFNAV_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
