@@ -55,7 +55,8 @@ void print_models(bool markdown) {
       for (double v : grid_nodes(p)) {
         char num[32];
         std::snprintf(num, sizeof num, "%.4g", v);
-        grid += (grid.empty() ? "" : " ") + std::string(num);
+        if (!grid.empty()) grid += ' ';
+        grid += num;
       }
       const char* scale = p.scale == Scale::log ? "log" : "linear";
       const std::string name(p.name), unit(p.unit), what(p.description);

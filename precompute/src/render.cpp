@@ -4,13 +4,8 @@
 #include "parallel_for.h"
 #include "quadrature.h"
 
-#include <atomic>
-#include <chrono>
-#include <condition_variable>
 #include <cstdio>
-#include <mutex>
 #include <optional>
-#include <thread>
 
 namespace brdfnav {
 
@@ -63,33 +58,6 @@ std::vector<double> mirror_widths(const SurfaceBuffer& s, double texel_angle) {
   return widths;
 }
 
-// Runs row(y, scratch) for every image row on `threads` workers while the calling thread reports
-// progress. Rows are independent, so the result does not depend on the scheduling.
-template <typename Row>
-void parallel_rows(int rows, int threads, const ProgressSink& progress, Row row) {
-  std::atomic<int> next{0}, done{0};
-  std::mutex mutex;
-  std::condition_variable finished;
-  auto worker = [&] {
-    QuadratureScratch scratch;
-    for (int y; (y = next++) < rows;) {
-      row(y, scratch);
-      if (++done == rows) {
-        std::lock_guard lock(mutex);
-        finished.notify_all();
-      }
-    }
-  };
-  std::vector<std::jthread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  std::unique_lock lock(mutex);
-  while (!finished.wait_for(lock, std::chrono::milliseconds(200), [&] { return done == rows; }))
-    if (progress) progress(done, rows);
-  lock.unlock();
-  pool.clear();
-  if (progress) progress(rows, rows);
-}
-
 }  // namespace
 
 struct Renderer::Impl {
@@ -121,11 +89,16 @@ struct Renderer::Impl {
   template <typename V = Rgb, typename Pixel>
   std::vector<V> pixel_values(Pixel pixel, const ProgressSink& progress) {
     std::vector<V> values(surface.points.size(), zero<V>());
-    parallel_rows(resolution, threads(), progress, [&](int y, QuadratureScratch& s) {
+    std::vector<QuadratureScratch> scratch(threads());
+    const auto row = [&](std::size_t y, int worker) {
       for (int x = 0; x < resolution; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * resolution + x;
-        if (surface.points[i].covered) values[i] = pixel(surface.points[i], i, s);
+        const std::size_t i = y * resolution + x;
+        if (surface.points[i].covered) values[i] = pixel(surface.points[i], i, scratch[worker]);
       }
+    };
+    const auto rows = std::size_t(resolution);
+    parallel_for(rows, threads(), row, [&](std::size_t done) {
+      if (progress) progress(int(done), resolution);
     });
     return values;
   }

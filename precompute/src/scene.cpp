@@ -9,7 +9,10 @@
 
 namespace brdfnav {
 
-namespace {
+// A named namespace, not an anonymous one: Scene::Impl holds these types, and gcc warns
+// (-Wsubobject-linkage) when a class defined outside the main file holds types of an anonymous
+// namespace, which a unity build makes of every source.
+namespace scene_parts {
 
 // Owns an Embree device whose error callback records the first error; callers check() after
 // each group of Embree calls, so no exception ever crosses Embree's frames.
@@ -65,7 +68,11 @@ struct Mesh {
   std::vector<std::array<Vec3, 3>> normals;    // per face corner; empty when faces are flat
 };
 
-}  // namespace
+}  // namespace scene_parts
+
+using scene_parts::EmbreeDevice;
+using scene_parts::EmbreeScene;
+using scene_parts::Mesh;
 
 struct Scene::Impl {
   EmbreeDevice device;
