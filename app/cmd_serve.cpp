@@ -9,8 +9,10 @@
 #include <pthread.h>
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <thread>
@@ -18,6 +20,10 @@
 namespace brdfnav::cli {
 
 namespace {
+
+// Pool threads answering connections: enough for a few browser tabs' keep-alive connections
+// (6 each) and a burst of API requests beside them.
+constexpr int kServeThreads = 64;
 
 struct ServeOptions {
   std::string db;
@@ -102,18 +108,35 @@ void add_error_handling(httplib::Server& server) {
        {"Cache-Control", "no-store"}});
 }
 
+// httplib serves each connection on one pool thread, which then waits up to the keep-alive
+// timeout (5 s) for the connection's next request: with its default 8 threads, a browser's 6
+// idle connections and a burst of requests kept others waiting 5 s each (a burst of 54 took
+// 18 s, 0.2 s with these threads). An idle thread costs next to nothing.
+void size_for_bursts(httplib::Server& server) {
+  server.new_task_queue = [] { return new httplib::ThreadPool(kServeThreads); };
+}
+
 int bind(httplib::Server& server, const ServeOptions& o) {
   // httplib's default adds SO_REUSEPORT, with which a second server shares the port silently
   // and gets half the requests; SO_REUSEADDR alone still allows a restart at once.
-  server.set_socket_options([](socket_t sock) {
+  socket_t listening = INVALID_SOCKET;  // the last socket tried is the one bound
+  server.set_socket_options([&listening](socket_t sock) {
     const int yes = 1;
     setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    listening = sock;
   });
   const int port = o.port == 0 ? server.bind_to_any_port(o.host)
                                : (server.bind_to_port(o.host, o.port) ? o.port : -1);
   if (port <= 0)
     throw std::runtime_error("--port: cannot listen on " + o.host + ":" + std::to_string(o.port) +
                              " (in use, or not an address of this machine)");
+  // Debian's compiled httplib listens with a backlog of 5: a burst of connections beyond it
+  // while the accepting thread is busy has its SYNs dropped, and a client gives up after its
+  // connect timeout (undici's 10 s; seen under ASan on a loaded machine). Listening again on
+  // the bound socket raises the backlog.
+  if (::listen(listening, SOMAXCONN) != 0)
+    throw std::runtime_error("--port: cannot listen on " + o.host + ":" + std::to_string(port) +
+                             ": " + std::strerror(errno));
   return port;
 }
 
@@ -140,6 +163,7 @@ void serve(const ServeOptions& o) {
   httplib::Server server;
   add_routes(server, *api);
   add_error_handling(server);
+  size_for_bursts(server);
   const int port = bind(server, o);
   if (o.host != "127.0.0.1" && o.host != "localhost" && o.host != "::1")
     std::fprintf(stderr, "brdfnav: warning: --host %s: reachable from other machines\n",

@@ -122,7 +122,10 @@ async function setSlider(position) {
 
 async function api(pathname, body, type = 'application/json') {
   const init = body === undefined ? {} : { method: 'POST', body, headers: { 'Content-Type': type } };
-  const response = await fetch(new URL(pathname, url), init);
+  // undici's 'fetch failed' says nothing more; its cause names the socket error.
+  const response = await fetch(new URL(pathname, url), init).catch((error) => {
+    throw new Error(`${pathname}: ${error.message}: ${error.cause?.code ?? error.cause}`);
+  });
   const text = await response.text();
   return { status: response.status, type: response.headers.get('content-type'), text };
 }
@@ -402,6 +405,49 @@ test('bad API requests get 400 naming the field, and the server keeps serving', 
   const png = await fetch(new URL('/api/thumbnail', url), { method: 'POST', body: body({ material: m }) });
   assert.equal(png.headers.get('content-type'), 'image/png');
   assert.equal(Buffer.from(await png.arrayBuffer()).subarray(1, 4).toString(), 'PNG');
+});
+
+// Raw sockets on the server's port, each with promises of its connection and first answer;
+// `request` is sent on each once it connects.
+function openSockets(count, request) {
+  const { hostname, port } = new URL(url);
+  return Array.from({ length: count }, () => {
+    const socket = net.connect(Number(port), hostname);
+    const state = { socket, closed: false };
+    state.connected = new Promise((resolve) => socket.on('connect', resolve));
+    state.answered = new Promise((resolve) => socket.once('data', resolve));
+    socket.on('close', () => { state.closed = true; });
+    socket.on('error', () => {});  // destroyed mid-handshake by the test
+    if (request) socket.on('connect', () => socket.write(request));
+    return state;
+  });
+}
+
+test('a burst of connections and idle keep-alive ones hold no request back', async () => {
+  // While the server cannot accept (stopped), the kernel queues the connections up to the listen
+  // backlog; httplib's compiled-in 5 dropped the rest, and clients gave up after 10 s.
+  server.kill('SIGSTOP');
+  try {
+    const burst = openSockets(64);
+    const connected = await Promise.race([Promise.all(burst.map((s) => s.connected)),
+      new Promise((resolve) => setTimeout(() => resolve(false), 3000))]);
+    burst.forEach((s) => s.socket.destroy());
+    assert.ok(connected, 'all 64 connections completed while the server was stopped');
+  } finally {
+    server.kill('SIGCONT');
+  }
+  // Each answered keep-alive connection holds a server thread until its next request or the 5 s
+  // keep-alive timeout; with httplib's 8 threads, 16 of them made the next request wait for the
+  // first timeouts. It must be answered while all 16 are still open.
+  const { host } = new URL(url);
+  const idle = openSockets(16, `GET /api/info HTTP/1.1\r\nHost: ${host}\r\n\r\n`);
+  try {
+    await Promise.all(idle.map((s) => s.answered));
+    assert.equal((await api('/api/info')).status, 200);
+    assert.equal(idle.filter((s) => s.closed).length, 0, 'no idle connection timed out first');
+  } finally {
+    idle.forEach((s) => s.socket.destroy());
+  }
 });
 
 test('serve refuses a port in use and a missing database, naming the option', async () => {
