@@ -25,16 +25,29 @@ Image resampled(const Image& image, int size) {
   return out;
 }
 
+std::size_t pixel_bytes(const Image& image) {
+  return image.rgba.size() * sizeof(float);
+}
+
 }  // namespace
 
-Thumbnails::Thumbnails(const Database& database, int resolution)
+Thumbnails::Thumbnails(const Database& database, int resolution, std::size_t cache_bytes)
     : database_(database),
-      resolution_(resolution > 0 ? resolution : database.manifest().resolution) {}
+      resolution_(resolution > 0 ? resolution : database.manifest().resolution),
+      cache_budget_(cache_bytes) {}
+
+std::size_t Thumbnails::cached_bytes() const {
+  std::lock_guard lock(mutex_);
+  return cached_bytes_;
+}
 
 std::shared_ptr<const Image> Thumbnails::image(Key key) const {
   {
     std::lock_guard lock(mutex_);
-    if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+    if (auto it = cache_.find(key); it != cache_.end()) {
+      uses_.splice(uses_.begin(), uses_, it->second.use);
+      return it->second.image;
+    }
   }
   // Read outside the lock: other threads' thumbnails need not wait for this file.
   const auto path = key.first < 0
@@ -46,9 +59,24 @@ std::shared_ptr<const Image> Thumbnails::image(Key key) const {
   } catch (const ImageError& e) {
     throw DatabaseError(e.what());
   }
-  auto shared = std::make_shared<const Image>(std::move(img));
+  return keep(key, std::make_shared<const Image>(std::move(img)));
+}
+
+std::shared_ptr<const Image> Thumbnails::keep(Key key, std::shared_ptr<const Image> image) const {
   std::lock_guard lock(mutex_);
-  return cache_.emplace(key, std::move(shared)).first->second;
+  if (auto it = cache_.find(key); it != cache_.end()) return it->second.image;  // read twice
+  uses_.push_front(key);
+  cache_.emplace(key, Cached{image, uses_.begin()});
+  cached_bytes_ += pixel_bytes(*image);
+  // A render in progress keeps its images through its shared_ptr; dropping them here only
+  // means the next render reads them again.
+  while (cached_bytes_ > cache_budget_ && uses_.size() > 1) {
+    const auto oldest = cache_.find(uses_.back());
+    cached_bytes_ -= pixel_bytes(*oldest->second.image);
+    cache_.erase(oldest);
+    uses_.pop_back();
+  }
+  return image;
 }
 
 Image Thumbnails::render(const Material& m) const {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <thread>
 
 namespace brdfnav::test {
@@ -89,21 +90,45 @@ TEST(Thumbnails, RejectsInvalidMaterials) {
   EXPECT_THROW(thumbnails.render(bad), MaterialError);
 }
 
-TEST(Thumbnails, ConcurrentRendersMatchSerialOnes) {
-  const Thumbnails serial(database(), 64), shared(database(), 64);
+std::vector<Material> ward_row() {
   std::vector<Material> materials;
   for (int i = 0; i < 16; ++i) materials.push_back(ward(0.006 + 0.03 * i, 0.2 - 0.01 * i));
+  return materials;
+}
+
+// Bytes of `count` cached images at `size` x `size`.
+std::size_t images_bytes(int count, int size) {
+  return std::size_t(count) * size * size * 4 * sizeof(float);
+}
+
+TEST(Thumbnails, ACacheHeldToItsBudgetGivesTheSameImages) {
+  const Thumbnails unbounded(database(), 32, SIZE_MAX), small(database(), 32, images_bytes(5, 32));
+  for (const Material& m : ward_row()) {
+    EXPECT_EQ(small.render(m).rgba, unbounded.render(m).rgba);
+    EXPECT_LE(small.cached_bytes(), images_bytes(5, 32));
+  }
+  // The row blends more than 5 distinct nodes: the small cache dropped some, the other none.
+  EXPECT_EQ(small.cached_bytes(), images_bytes(5, 32));
+  EXPECT_GT(unbounded.cached_bytes(), images_bytes(5, 32));
+}
+
+TEST(Thumbnails, ConcurrentRendersMatchSerialOnes) {
+  // `small` drops images while other threads use them.
+  const Thumbnails serial(database(), 64), shared(database(), 64),
+      small(database(), 64, images_bytes(3, 64));
+  const std::vector<Material> materials = ward_row();
   std::vector<Image> expected;
   for (const Material& m : materials) expected.push_back(serial.render(m));
   std::vector<std::vector<Image>> got(8);
   std::vector<std::jthread> pool;
   for (int t = 0; t < 8; ++t)
     pool.emplace_back([&, t] {
-      for (const Material& m : materials) got[t].push_back(shared.render(m));
+      for (const Material& m : materials) got[t].push_back((t % 2 ? small : shared).render(m));
     });
   pool.clear();
   for (const auto& run : got)
     for (std::size_t i = 0; i < materials.size(); ++i) EXPECT_EQ(run[i].rgba, expected[i].rgba);
+  EXPECT_LE(small.cached_bytes(), images_bytes(3, 64));
 }
 
 double srgb_encode(double x) {

@@ -11,6 +11,8 @@
 #include <brdfnav/precompute/database.h>
 #include <brdfnav/precompute/image.h>
 
+#include <cstddef>
+#include <list>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -20,24 +22,41 @@ namespace brdfnav {
 
 class Thumbnails {
  public:
-  // `resolution` 0: the database's own. The database must outlive this object.
-  explicit Thumbnails(const Database& database, int resolution = 128);
+  // 64 MiB: 256 database images at 128 x 128, more than the nodes a tab's 10 He thumbnails blend
+  // (64 each, mostly shared), against the 240 MiB of every image of a default database.
+  static constexpr std::size_t kDefaultCacheBytes = std::size_t{64} << 20;
+
+  // `resolution` 0: the database's own. The database must outlive this object. The images read
+  // are kept, least recently used first out, up to `cache_bytes` (at least the last one read).
+  explicit Thumbnails(const Database& database, int resolution = 128,
+                      std::size_t cache_bytes = kDefaultCacheBytes);
 
   int resolution() const { return resolution_; }
   // Linear RGBA at resolution() x resolution(), alpha the database's mask. Throws
   // MaterialError for an invalid material, DatabaseError for a model the database lacks or an
   // unreadable image. Thread-safe.
   Image render(const Material& m) const;
+  // The bytes of pixels the cache holds now.
+  std::size_t cached_bytes() const;
 
  private:
   using Key = std::pair<int, std::size_t>;  // (model, node); model -1 is the diffuse image
-  // The image at thumbnail resolution, read and resampled on first use, then kept.
+  struct Cached {
+    std::shared_ptr<const Image> image;
+    std::list<Key>::iterator use;  // its place in uses_
+  };
+  // The image at thumbnail resolution, read and resampled on first use, then cached.
   std::shared_ptr<const Image> image(Key key) const;
+  // Holds `image` as the most recently used; drops the least recently used over the budget.
+  std::shared_ptr<const Image> keep(Key key, std::shared_ptr<const Image> image) const;
 
   const Database& database_;
   int resolution_;
+  std::size_t cache_budget_;
   mutable std::mutex mutex_;
-  mutable std::map<Key, std::shared_ptr<const Image>> cache_;
+  mutable std::map<Key, Cached> cache_;
+  mutable std::list<Key> uses_;  // most recently used first
+  mutable std::size_t cached_bytes_ = 0;
 };
 
 }  // namespace brdfnav
