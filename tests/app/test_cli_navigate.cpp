@@ -1,5 +1,6 @@
-// `brdfnav neighbors`, `brdfnav variations` and `brdfnav export` end to end, on a test-profile database the suite
-// builds once with `brdfnav precompute` (the suite is registered WHOLE).
+// `brdfnav neighbors`, `brdfnav variations` and `brdfnav export` end to end, on a test-profile
+// database built with `brdfnav precompute`: the shared one of CTest's test_database fixture
+// ($BRDFNAV_TEST_DATABASE), else one the suite builds once (it is registered WHOLE).
 #include "app/cli_runner.h"
 
 #include <brdfnav/core/material.h>
@@ -8,6 +9,7 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
 #include <set>
 
 namespace brdfnav::test {
@@ -21,17 +23,22 @@ class CliNavigate : public ::testing::Test {
     root_ = fs::temp_directory_path() / ("brdfnav_cli_navigate_" + std::to_string(::getpid()));
     fs::remove_all(root_);
     fs::create_directories(root_);
-    const CliResult r = run_cli("precompute --profile test --out " + db().string());
+    if (const char* shared = std::getenv("BRDFNAV_TEST_DATABASE"); shared && *shared) {
+      db_ = shared;
+      return;
+    }
+    db_ = root_ / "db";
+    const CliResult r = run_cli("precompute --profile test --out " + db_.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
-  static fs::path db() { return root_ / "db"; }
+  static const fs::path& db() { return db_; }
   static fs::path file(const std::string& name) { return root_ / name; }
   static CliResult neighbors(const std::string& args) {
     return run_cli("neighbors --db " + db().string() + " " + args);
   }
 
-  static inline fs::path root_;
+  static inline fs::path root_, db_;
 };
 
 // Every item has the stable keys; its material reads back through the CLI (`eval`).
@@ -141,9 +148,9 @@ TEST_F(CliNavigate, VariationsWritesAContactSheetPerTab) {
   const std::string material = "--material ward:alpha_x=0.05,alpha_y=0.03,rho_d=0.1,rho_s=0.5";
   for (const char* tab : {"lobe", "diffuse", "specular", "models", "gallery"}) {
     const fs::path sheet = file(std::string("sheet_") + tab + ".png");
-    const CliResult r = run_cli("variations --db " + db().string() + " " + material +
-                                " --radius 0.05 --size 32 --tab " + tab + " --out " +
-                                sheet.string());
+    const CliResult r =
+        run_cli("variations --db " + db().string() + " " + material +
+                " --radius 0.05 --size 32 --tab " + tab + " --out " + sheet.string());
     ASSERT_EQ(r.exit_code, 0) << tab << ": " << r.err;
     const std::string png = read_text(sheet);
     ASSERT_GT(png.size(), 8u) << tab;

@@ -1,6 +1,7 @@
 // `brdfnav serve` end to end: the page in Debian's headless Chromium, driven by Playwright, and
-// the JSON API's answers to bad requests. Builds a `test`-profile database, starts the server on
-// a free loopback port and keeps a screenshot of every step in the artefacts directory.
+// the JSON API's answers to bad requests. On a `test`-profile database ($BRDFNAV_TEST_DATABASE,
+// CTest's shared one, else one it builds), starts the server on a free loopback port and keeps a
+// screenshot of every step in the artefacts directory.
 //
 //   node tests/browser/navigator.test.mjs [BRDFNAV_CLI] [ARTEFACTS_DIR]
 import { after, before, test } from 'node:test';
@@ -33,6 +34,7 @@ try {
 
 const run = promisify(execFile);
 const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'brdfnav-browser-'));
+let db;
 let server;
 let url;
 let context;
@@ -60,10 +62,14 @@ function startServer(db) {
 before(async () => {
   fs.mkdirSync(artefacts, { recursive: true });
   for (const old of fs.readdirSync(artefacts)) fs.rmSync(path.join(artefacts, old), { force: true });
-  const db = path.join(tmp, 'db');
-  const { stderr } = await run(cli, ['precompute', '--profile', 'test', '--out', db],
-    { maxBuffer: 64 << 20 });
-  fs.writeFileSync(path.join(artefacts, 'precompute.log'), stderr);
+  // CTest's shared test database (tests/CMakeLists.txt), else one of its own.
+  db = process.env.BRDFNAV_TEST_DATABASE;
+  if (!db) {
+    db = path.join(tmp, 'db');
+    const { stderr } = await run(cli, ['precompute', '--profile', 'test', '--out', db],
+      { maxBuffer: 64 << 20 });
+    fs.writeFileSync(path.join(artefacts, 'precompute.log'), stderr);
+  }
   url = await startServer(db);
   context = await chromium.launchPersistentContext(path.join(tmp, 'chromium-profile'), {
     executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS,
@@ -452,7 +458,7 @@ test('a burst of connections and idle keep-alive ones hold no request back', asy
 
 test('serve refuses a port in use and a missing database, naming the option', async () => {
   const { port } = new URL(url);
-  for (const [args, error] of [[['--db', path.join(tmp, 'db'), '--port', port], /--port: /],
+  for (const [args, error] of [[['--db', db, '--port', port], /--port: /],
     [['--db', path.join(tmp, 'none'), '--port', '0'], /--db: /]]) {
     // A serve that starts after all is killed after 20 s, and fails the check on its exit code.
     await assert.rejects(run(cli, ['serve', ...args], { timeout: 20000 }),

@@ -1,6 +1,8 @@
-// The database the navigator tests query: the `test` precompute profile, built once per test
-// process into a temporary directory of its own and removed at exit. Executables that use it
-// are registered WHOLE, so the build is paid once per executable.
+// The database the navigator tests query: the `test` precompute profile. Under CTest it is the
+// `test_database` fixture, built once per run by the CLI and named by $BRDFNAV_TEST_DATABASE
+// (tests/CMakeLists.txt); run alone, an executable builds it once into a temporary directory of
+// its own. Either way the tests only read it; scratch() is this process's own directory, removed
+// at exit.
 #pragma once
 
 #include <brdfnav/core/material.h>
@@ -8,6 +10,7 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -21,20 +24,25 @@ class NavigationDatabase {
     return db;
   }
   const std::filesystem::path& dir() const { return dir_; }
+  const std::filesystem::path& scratch() const { return scratch_; }
 
  private:
   NavigationDatabase()
-      : root_(std::filesystem::temp_directory_path() /
-              ("brdfnav_test_navigator_" + std::to_string(::getpid()))),
-        dir_(root_ / "db") {
-    std::filesystem::remove_all(root_);
-    std::filesystem::create_directories(root_);
+      : scratch_(std::filesystem::temp_directory_path() /
+                 ("brdfnav_test_navigator_" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(scratch_);
+    std::filesystem::create_directories(scratch_);
+    if (const char* shared = std::getenv("BRDFNAV_TEST_DATABASE"); shared && *shared) {
+      dir_ = shared;
+      return;
+    }
+    dir_ = scratch_ / "db";
     const EnvMap env = EnvMap::load(kDefaultEnvPath, {}, [](const std::string&) {});
     precompute_database({make_profile("test"), dir_, false, 0, {}}, env, Scene::sphere());
   }
-  ~NavigationDatabase() { std::filesystem::remove_all(root_); }
+  ~NavigationDatabase() { std::filesystem::remove_all(scratch_); }
 
-  std::filesystem::path root_, dir_;
+  std::filesystem::path scratch_, dir_;
 };
 
 // A material of `id` with every parameter uniform (in its scale) inside `grid` and random

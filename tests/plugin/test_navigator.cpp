@@ -362,7 +362,7 @@ TEST(Navigator, RejectsQueriesItCannotAnswer) {
 // A database of two models: the others cannot be queried, and the models tab offers only what
 // is there.
 TEST(Navigator, AnswersOnlyForTheModelsOfItsDatabase) {
-  const std::filesystem::path dir = test::NavigationDatabase::get().dir().parent_path() / "two";
+  const std::filesystem::path dir = test::NavigationDatabase::get().scratch() / "two";
   Profile profile = make_profile("test");
   profile.grids.erase(profile.grids.begin() + 2, profile.grids.end());  // blinn_phong, ward
   const EnvMap env = EnvMap::load(kDefaultEnvPath, {}, [](const std::string&) {});

@@ -12,18 +12,12 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstdlib>
 
 namespace brdfnav {
 namespace {
 
-std::filesystem::path database_dir() {
-  if (const char* dir = std::getenv("BRDFNAV_TEST_NAV_DB")) return dir;
-  return test::NavigationDatabase::get().dir();
-}
-
 TEST(NavigatorRendered, LobeNeighboursLookEpsAway) {
-  const Navigator nav = Navigator::open(database_dir());
+  const Navigator nav = Navigator::open(test::NavigationDatabase::get().dir());
   const Manifest& manifest = nav.database().manifest();
   const EnvMap env = EnvMap::load(manifest.env_path, {}, [](const std::string&) {});
   ASSERT_EQ(env.pixel_hash(), manifest.env_hash);
