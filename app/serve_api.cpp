@@ -103,11 +103,27 @@ Material check_held(const Database& db, Material m) {
   return m;
 }
 
+// YAML limits an implicit key to 1024 characters; yaml-cpp fails a longer one as a syntax error.
+constexpr std::size_t kMaxYamlKeyBytes = 1024;
+
+const std::string* overlong_key(const json& value) {
+  if (!value.is_structured()) return nullptr;
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    if (value.is_object() && it.key().size() > kMaxYamlKeyBytes) return &it.key();
+    if (const std::string* key = overlong_key(*it)) return key;
+  }
+  return nullptr;
+}
+
 // JSON is YAML's flow syntax, so the material reader of the YAML files reads a JSON material
-// as it is, with the same checks and messages ("material:1: params.n: ...").
+// as it is, with the same checks and messages ("material:1: params.n: ..."), once it holds no
+// key too long for YAML (no material key is).
 Material read_material(const Database& db, const json& value) {
   if (!value.is_object()) throw RequestError("material", "expected an object, got " + shown(value));
   if (deeper_than(value, 3)) throw RequestError("material", "nested too deeply");
+  if (const std::string* key = overlong_key(value))
+    throw RequestError("material", "unknown key of " + std::to_string(key->size()) + " bytes " +
+                                       shown(json(*key)));
   return check_held(db, material_from_node(YAML::Load(value.dump()), "material", false));
 }
 

@@ -77,8 +77,14 @@ long decode_utf8(std::string_view s, std::size_t& i) {
   return cp >= kShortest[length] && cp <= 0x10ffff && (cp < 0xd800 || cp > 0xdfff) ? cp : -1;
 }
 
+// The 66 code points Unicode reserves as noncharacters; yaml-cpp writes each as U+FFFD.
+bool is_noncharacter(long c) {
+  return (c >= 0xfdd0 && c <= 0xfdef) || (c & 0xfffe) == 0xfffe;
+}
+
 // A colour space name must read back from every format brdfnav writes it in: YAML, which holds
-// printable Unicode only, and the inline spec, which splits items at ',' and trims values.
+// printable Unicode characters only, and the inline spec, which splits items at ',' and trims
+// values.
 void check_colorspace(std::string_view name) {
   if (name.empty()) throw MaterialError("colorspace: must not be empty");
   if (trim(name) != name)
@@ -86,7 +92,7 @@ void check_colorspace(std::string_view name) {
   for (std::size_t i = 0; i < name.size();) {
     const std::size_t at = i;
     const long c = decode_utf8(name, i);
-    if (c < 0x20 || c == 0x7f || (c >= 0x80 && c < 0xa0) || c == 0xfffe || c == 0xffff || c == ',')
+    if (c < 0x20 || c == 0x7f || (c >= 0x80 && c < 0xa0) || is_noncharacter(c) || c == ',')
       throw MaterialError("colorspace: byte " + std::to_string(at) +
                           " is not allowed (a colour space name is printable UTF-8 without ',')");
   }

@@ -272,6 +272,9 @@ std::vector<Rejection> rejections() {
        3, "params.alpha_x"},
       {"colorspace without a value", doc_with(6, "colorspace:\n"), 6, "colorspace"},
       {"empty colorspace", doc_with(6, "colorspace: \"\"\n"), 6, "colorspace"},
+      // Noncharacters: yaml-cpp would write either as U+FFFD, a different name.
+      {"colorspace with U+FDD0", doc_with(6, "colorspace: \"lin\\uFDD0\"\n"), 6, "colorspace"},
+      {"colorspace with U+10FFFF", doc_with(6, "colorspace: \"a\\U0010FFFF\"\n"), 6, "colorspace"},
       {"empty file", "", 1, "material"},
       {"comments only", "# a material\n", 1, "material"},
       {"top level is a list", "- ward\n- 0.1\n", 1, "material"},
