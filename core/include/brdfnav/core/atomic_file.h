@@ -28,7 +28,9 @@ class AtomicOutput {
   bool committed_ = false;
 };
 
-// Writes `contents` to `target` atomically; throws std::runtime_error naming the file.
+// Writes `contents` to `target` atomically and durably: an unnamed temporary (O_TMPFILE, where
+// the filesystem has it) flushed to disk before it is renamed onto the target, so that a killed
+// writer leaves no file behind. Throws std::runtime_error naming the target.
 void write_file_atomic(const std::filesystem::path& target, std::string_view contents);
 
 }  // namespace brdfnav
