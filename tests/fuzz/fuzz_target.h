@@ -1,6 +1,7 @@
 // What the fuzz targets of tests/fuzz share. Each target file defines libFuzzer's entry point,
 // LLVMFuzzerTestOneInput: `./run fuzz` links it with -fsanitize=fuzzer (clang), and the normal
-// build links it with corpus_replay.cpp, which feeds it every file of tests/corpus/<target>/.
+// build links it with corpus_replay.cpp, which feeds it every file of tests/corpus/<target>/
+// (in the fuzzing tree the libFuzzer executable replays those files).
 //
 // A target catches the errors its function documents (the expected outcome of bad input) and
 // nothing else: any other exception escapes, ends in std::terminate under libFuzzer (which saves
