@@ -84,7 +84,7 @@ void add_precompute_commands(CLI::App& app) {
   auto resume = std::make_shared<bool>(false);
   auto threads = std::make_shared<int>(0);
   auto shard = std::make_shared<std::string>("0/1");
-  cmd->add_option("--profile", *profile, "Grid density: test, default or paper")
+  cmd->add_option("--profile", *profile, "Grid density: smoke, test, default or paper")
       ->capture_default_str()
       ->check(CLI::IsMember(profile_names()));
   add_scene_options(*cmd, *scene);

@@ -15,10 +15,40 @@ ProfileGrid grid_of(ModelId id, std::vector<std::vector<double>> axes) {
   return {id, ParamGrid(model_info(id).params, std::move(axes))};
 }
 
-// Small grids that still span the tables' ranges. Lafortune keeps cz = 1/sqrt(3) (the Phong
-// lobe) with close nodes either side, where the lobe changes fastest. He is the slowest model to
-// render, so it gets the fewest nodes.
+// `count` nodes evenly spaced in the parameter's scale over its table's grid range (a denser or
+// coarser version of the table's own axis).
+std::vector<double> table_axis(ModelId id, std::size_t d, int count) {
+  ParamSpec spec = model_info(id).params[d];
+  spec.nodes = {};
+  spec.grid_count = count;
+  return grid_nodes(spec);
+}
+
+// The test profile's grids: the tables' ranges (Lafortune's cz in the band around
+// 1/sqrt(3) where its lobe shows, He's eta 1.5..4), as densely as the neighbour service needs at
+// 16 x 16. The counts were raised until neighbours at embedded distance eps rendered at eps
+// within 5% (median) and 10% (90th percentile) over 10 random materials per model and several
+// seeds (docs/NAVIGATION.md, Accuracy): the spline between nodes models the images only where a
+// cell is small against the image's curvature, and eps = 0.01 is a small step.
 std::vector<ProfileGrid> test_grids() {
+  using M = ModelId;
+  std::vector<ProfileGrid> grids;
+  grids.push_back(grid_of(M::blinn_phong, {table_axis(M::blinn_phong, 0, 20)}));
+  grids.push_back(grid_of(M::ward, {table_axis(M::ward, 0, 19), table_axis(M::ward, 1, 19)}));
+  grids.push_back(grid_of(
+      M::cook_torrance, {table_axis(M::cook_torrance, 0, 8), table_axis(M::cook_torrance, 1, 14)}));
+  grids.push_back(
+      grid_of(M::lafortune, {{0.54, 0.55, 0.555, 0.56, 0.565, 0.57, 0.572, 0.575,
+                              0.57735026918962573, 0.58, 0.5825, 0.585, 0.59, 0.595, 0.6},
+                             table_axis(M::lafortune, 1, 20)}));
+  grids.push_back(grid_of(
+      M::he, {table_axis(M::he, 0, 12), table_axis(M::he, 1, 12), {1.5, 1.9, 2.5, 3.2, 4}}));
+  return grids;
+}
+
+// The smoke profile's grids: 2 to 4 nodes per axis over the same ranges. Enough for every stage
+// of the pipeline, nothing more: its neighbours are not at eps.
+std::vector<ProfileGrid> smoke_grids() {
   std::vector<ProfileGrid> grids;
   grids.push_back(grid_of(ModelId::blinn_phong, {{2, 50, 1200, 80000}}));
   grids.push_back(grid_of(ModelId::ward, {{0.005, 0.05, 0.5}, {0.005, 0.05, 0.5}}));
@@ -26,6 +56,21 @@ std::vector<ProfileGrid> test_grids() {
   grids.push_back(grid_of(ModelId::lafortune, {{0.54, 0.57735026918962573, 0.6}, {2, 16384}}));
   grids.push_back(grid_of(ModelId::he, {{0.02, 2.56}, {2, 128}, {1.5, 4}}));
   return grids;
+}
+
+// What the test and smoke profiles share: 16 x 16 images, 5 samples of the colour ratio and a
+// coarse fit quadrature (they check the pipeline and the navigation, not the fits' accuracy).
+Profile small_profile(const std::string& name, std::vector<ProfileGrid> grids, int components) {
+  Profile p;
+  p.name = name;
+  p.resolution = 16;
+  p.grids = std::move(grids);
+  p.q_nodes = 5;
+  p.pca.components = components;
+  p.fit.n_wo = 4;
+  p.fit.n_wi = 48;
+  p.fit.starts = 1;
+  return p;
 }
 
 }  // namespace
@@ -43,35 +88,23 @@ const ParamGrid* Profile::grid(ModelId id) const {
 }
 
 const std::vector<std::string>& profile_names() {
-  static const std::vector<std::string> names{"test", "default", "paper"};
+  static const std::vector<std::string> names{"test", "smoke", "default", "paper"};
   return names;
 }
 
 Profile make_profile(const std::string& name) {
+  // About 15 s on a 2-core machine (docs/DATABASE.md); 100 of the ~200 covered pixels'
+  // dimensions keep the embedded distances within 2% of the images'.
+  if (name == "test") return small_profile(name, test_grids(), 100);
+  if (name == "smoke") return small_profile(name, smoke_grids(), 24);  // about 1 s
+  if (name != "paper" && name != "default")
+    throw ProfileError("unknown precompute profile '" + name +
+                       "' (expected test, smoke, default or paper)");
   Profile p;
   p.name = name;
+  p.resolution = name == "paper" ? 320 : 128;
+  p.grids = table_grids();
   p.pca.components = 200;
-  if (name == "paper") {
-    p.resolution = 320;
-    p.grids = table_grids();
-  } else if (name == "default") {
-    p.resolution = 128;
-    p.grids = table_grids();
-  } else if (name == "test") {
-    // The renderer sets this: He's eight images are most of the build, which takes about 30 s
-    // at 16 x 16 on a 2-core machine (docs/DATABASE.md).
-    p.resolution = 16;
-    p.grids = test_grids();
-    p.q_nodes = 5;
-    p.pca.components = 24;
-    // A coarser fit quadrature: the test profile checks the pipeline, not the fits' accuracy.
-    p.fit.n_wo = 4;
-    p.fit.n_wi = 48;
-    p.fit.starts = 1;
-  } else {
-    throw ProfileError("unknown precompute profile '" + name +
-                       "' (expected test, default or paper)");
-  }
   return p;
 }
 

@@ -3,7 +3,7 @@
 // option), prints nothing on stdout and leaves no output file. What other suites already check
 // through the CLI is not repeated: a missing --env file, a corrupt table (checksum mismatch), bad
 // inline specs and non-finite directions (test_cli_eval, test_cli_precompute, test_cli_render).
-// The suite builds one test-profile database and damages copies of it (it is registered WHOLE).
+// The suite builds one smoke-profile database and damages copies of it (it is registered WHOLE).
 #include "app/cli_runner.h"
 
 #include <brdfnav/precompute/database.h>
@@ -46,7 +46,7 @@ class BadInputs : public ::testing::Test {
     root_ = fs::temp_directory_path() / ("brdfnav_bad_inputs_" + std::to_string(::getpid()));
     fs::remove_all(root_);
     fs::create_directories(root_);
-    const CliResult r = run_cli("precompute --profile test --res 8 --out " + db().string());
+    const CliResult r = run_cli("precompute --profile smoke --res 8 --out " + db().string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
@@ -175,7 +175,7 @@ TEST_F(BadInputs, DamagedDatabases) {
   // Files of another database: an image, then the whole manifest. The second database differs
   // only in its resolution, so that both take the same time to build as the first.
   const fs::path other = file("other_db");
-  ASSERT_EQ(run_cli("precompute --profile test --res 9 --out " + other.string()).exit_code, 0);
+  ASSERT_EQ(run_cli("precompute --profile smoke --res 9 --out " + other.string()).exit_code, 0);
   d = damaged("swapped_image", {"images/ward/00003.exr: checksum mismatch"});
   fs::copy_file(other / "images/ward/00003.exr", d / "images/ward/00003.exr",
                 fs::copy_options::overwrite_existing);

@@ -9,8 +9,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The test profile end to end through the CLI, in one case because it is by far the slowest
-// part (He's images): build, inspect, refuse to overwrite, then reject a corrupted file.
+// The smoke profile end to end through the CLI (the test profile's build is the CTest fixture
+// test_database), in one case: build, inspect, refuse to overwrite, then reject a corrupted file.
 TEST(CliPrecompute, BuildsVerifiesAndRejectsACorruptDatabase) {
   const fs::path root =
       fs::temp_directory_path() / ("brdfnav_cli_precompute_" + std::to_string(::getpid()));
@@ -18,9 +18,8 @@ TEST(CliPrecompute, BuildsVerifiesAndRejectsACorruptDatabase) {
   fs::create_directories(root);
   const fs::path db = root / "db";
 
-  // The test profile; --res keeps the test at the smallest size the CLI takes should the profile
-  // grow (the renderer is the bottleneck).
-  auto r = run_cli("precompute --profile test --res 8 --out " + db.string());
+  // --res: the smallest size the CLI takes (the renderer is the bottleneck).
+  auto r = run_cli("precompute --profile smoke --res 8 --out " + db.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* phase : {"render: ", "embedding: ", "fits: ", "manifest: "})
     EXPECT_NE(r.err.find(std::string("brdfnav: ") + phase), std::string::npos) << phase;
@@ -28,11 +27,11 @@ TEST(CliPrecompute, BuildsVerifiesAndRejectsACorruptDatabase) {
 
   r = run_cli("db-info " + db.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("profile: test"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("profile: smoke"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("resolution: 8"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("model he: 8 nodes"), std::string::npos) << r.out;
 
-  r = run_cli("precompute --profile test --res 8 --out " + db.string());
+  r = run_cli("precompute --profile smoke --res 8 --out " + db.string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("already exists"), std::string::npos) << r.err;
 

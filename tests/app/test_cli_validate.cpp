@@ -132,7 +132,7 @@ void check_plots(const fs::path& dir, const YAML::Node& plots) {
 // One run with a tiny database, checked as a whole: the studies are the slow part.
 TEST(CliValidate, WritesEveryFigureAtSmallScale) {
   const fs::path root = scratch("_run"), db = root / "db", out = root / "report";
-  auto r = run_cli("precompute --profile test --res 8 --out " + db.string());
+  auto r = run_cli("precompute --profile smoke --res 8 --out " + db.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   r = run_cli("validate --res 24 --pairs 6 --db " + db.string() + " --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;

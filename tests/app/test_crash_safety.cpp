@@ -119,9 +119,9 @@ class CrashSafety : public ::testing::Test {
     fs::create_directories(root_);
   }
   void TearDown() override { fs::remove_all(root_); }
-  // The smallest build that has every phase: the test profile at 8 x 8.
+  // The smallest build that has every phase: the smoke profile at 8 x 8.
   static std::vector<std::string> precompute(const fs::path& out) {
-    return {"precompute", "--profile", "test", "--res", "8", "--out", out.string()};
+    return {"precompute", "--profile", "smoke", "--res", "8", "--out", out.string()};
   }
   fs::path root_;
 };
@@ -130,7 +130,7 @@ TEST_F(CrashSafety, KilledPrecomputeResumesToTheSameBytes) {
   const fs::path reference = root_ / "reference";
   CliResult full;
   const double seconds = seconds_of(
-      [&] { full = run_cli("precompute --profile test --res 8 --out " + reference.string()); });
+      [&] { full = run_cli("precompute --profile smoke --res 8 --out " + reference.string()); });
   ASSERT_EQ(full.exit_code, 0) << full.err;
   const std::map<std::string, std::string> expected = files_of(reference);
 
@@ -165,7 +165,7 @@ TEST_F(CrashSafety, KilledPrecomputeResumesToTheSameBytes) {
 
 TEST_F(CrashSafety, KilledExportLeavesNoPartialFile) {
   const fs::path db = root_ / "db";
-  const CliResult built = run_cli("precompute --profile test --res 8 --out " + db.string());
+  const CliResult built = run_cli("precompute --profile smoke --res 8 --out " + db.string());
   ASSERT_EQ(built.exit_code, 0) << built.err;
   const fs::path out = root_ / "exports" / "chosen.yaml";
   fs::create_directories(out.parent_path());

@@ -1,7 +1,8 @@
 // `brdfnav serve` end to end: the page in Debian's headless Chromium, driven by Playwright, and
-// the JSON API's answers to bad requests. On a `test`-profile database ($BRDFNAV_TEST_DATABASE,
-// CTest's shared one, else one it builds), starts the server on a free loopback port and keeps a
-// screenshot of every step in the artefacts directory.
+// the JSON API's answers to bad requests. On CTest's shared database ($BRDFNAV_TEST_DATABASE: the
+// test profile, the smoke profile in the sanitized trees), else a test-profile one it builds,
+// starts the server on a free loopback port and keeps a screenshot of every step in the
+// artefacts directory.
 //
 //   node tests/browser/navigator.test.mjs [BRDFNAV_CLI] [ARTEFACTS_DIR]
 import { after, before, test } from 'node:test';
@@ -35,6 +36,7 @@ try {
 const run = promisify(execFile);
 const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'brdfnav-browser-'));
 let db;
+let profile;  // the database's, as its manifest names it
 let server;
 let url;
 let context;
@@ -70,6 +72,7 @@ before(async () => {
       { maxBuffer: 64 << 20 });
     fs.writeFileSync(path.join(artefacts, 'precompute.log'), stderr);
   }
+  profile = YAML.parse(fs.readFileSync(path.join(db, 'manifest.yaml'), 'utf8')).profile;
   url = await startServer(db);
   context = await chromium.launchPersistentContext(path.join(tmp, 'chromium-profile'), {
     executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS,
@@ -173,7 +176,7 @@ test('the page opens on the start gallery around the start material', async () =
     (rows) => rows.map((r) => r.dataset.key));
   const params = models.find((m) => m.name === start.model).params.map((p) => p.name);
   assert.deepEqual(readout, [...params, 'rho_d', 'rho_s', 'colorspace']);
-  assert.match(await page.textContent('#provenance'), /profile test/);
+  assert.match(await page.textContent('#provenance'), new RegExp(`profile ${profile}`));
   assert.equal(await page.isDisabled('#back'), true);
   await shot('start-gallery');
 });
@@ -261,7 +264,7 @@ test('Export YAML downloads the export of the current material', async () => {
   assert.equal(doc.brdfnav_material, 1);
   for (const key of ['model', 'params', 'rho_d', 'rho_s', 'colorspace'])
     assert.deepEqual(doc[key], current[key], key);
-  assert.equal(doc.provenance.profile, 'test');
+  assert.equal(doc.provenance.profile, profile);
   assert.match(doc.provenance.manifest_sha1, /^[0-9A-F]{40}$/);
   const others = (await info()).models.map((m) => m.name).filter((m) => m !== current.model);
   assert.deepEqual(Object.keys(doc.equivalents), others);

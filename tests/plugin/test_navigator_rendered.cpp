@@ -2,7 +2,7 @@
 // current material and each lobe neighbour with the pre-renderer, at the database's resolution
 // and render quality, and compares the exact cube-root RMS distance (image_distance) with eps.
 // The deviations depend on the database (grid density, coefficients kept) and on the
-// renderer's accuracy; BRDFNAV_TEST_NAV_DB=DIR measures another database than the test
+// renderer's accuracy; BRDFNAV_TEST_DATABASE=DIR measures another database than the test
 // profile's.
 #include "navigator_fixture.h"
 
@@ -19,6 +19,7 @@ namespace {
 TEST(NavigatorRendered, LobeNeighboursLookEpsAway) {
   const Navigator nav = Navigator::open(test::NavigationDatabase::get().dir());
   const Manifest& manifest = nav.database().manifest();
+  if (manifest.profile == "smoke") GTEST_SKIP() << "the smoke profile makes no accuracy claim";
   const EnvMap env = EnvMap::load(manifest.env_path, {}, [](const std::string&) {});
   ASSERT_EQ(env.pixel_hash(), manifest.env_hash);
   ASSERT_EQ(manifest.scene, "sphere");
@@ -32,7 +33,9 @@ TEST(NavigatorRendered, LobeNeighboursLookEpsAway) {
   std::printf("%-14s %-10s %9s %9s %9s\n", "model", "label", "eps", "rendered", "error");
   for (const ProfileGrid& g : manifest.grids) {
     std::vector<double> model_errors;
-    for (int trial = 0; trial < 3; ++trial) {
+    // 10 materials per model: with 3, the 90th percentile moved by several points from one seed
+    // to the next.
+    for (int trial = 0; trial < 10; ++trial) {
       const Material m = test::random_material(g.model, g.grid, rng, 0.3, 0.2, 1.0);
       const Image current = renderer.render(m);
       for (double eps : {0.01, 0.03}) {
@@ -57,13 +60,10 @@ TEST(NavigatorRendered, LobeNeighboursLookEpsAway) {
   std::printf("all: %zu neighbours, median |error| %.1f%%, p90 %.1f%% (database %s, %d px)\n",
               errors.size(), 100 * median, 100 * p90, manifest.profile.c_str(),
               manifest.resolution);
-  // Issue #5 asks for a median of 5% and a p90 of 10%. That is not met on the test profile: with
-  // 2 to 4 nodes per axis, no interpolation of the embedding is a good model of the images
-  // between nodes (measured 61% / 131% at 16 x 16; on the paper's Table 1 grids at 32 x 32,
-  // 3.2% / 17%: docs/NAVIGATION.md). Until denser grids close the gap, these bounds only guard
-  // today's figures against getting worse.
-  EXPECT_LE(median, 0.75);
-  EXPECT_LE(p90, 1.75);
+  // Issue #5: a median of 5% and a 90th percentile of 10% (measured 2.0% / 6.9% on the test
+  // profile, docs/NAVIGATION.md).
+  EXPECT_LE(median, 0.05);
+  EXPECT_LE(p90, 0.10);
 }
 
 }  // namespace

@@ -42,8 +42,10 @@ struct Profile {
 };
 
 // "paper": Table 1 grids at 320 x 320 with 200 coefficients; "default": the same grids at
-// 128 x 128 (what `./run demo` uses); "test": small grids at 16 x 16 for CI (the renderer's speed
-// sets this). Throws ProfileError for any other name.
+// 128 x 128 (what `./run demo` uses); "test": grids at 16 x 16 for CI, dense enough for the
+// neighbour service's accuracy; "smoke": 2 to 4 nodes per axis at 16 x 16, the whole pipeline in
+// about a second, for the CLI, crash-safety and sanitizer tests. Throws ProfileError for any other
+// name.
 Profile make_profile(const std::string& name);
 const std::vector<std::string>& profile_names();
 
