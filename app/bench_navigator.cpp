@@ -89,7 +89,8 @@ void run_navigator_bench(const NavigatorBenchOptions& o) {
     std::printf("| %s | %zu | %.3f | %.3f | %.3f |\n", std::string(tab_name(tab)).c_str(),
                 ms.size(), p.median, p.p99, p.max);
   }
-  const Thumbnails thumbnails(navigator.database(), o.thumbnail_size);
+  const Thumbnails thumbnails(navigator.database(), o.thumbnail_size,
+                              std::size_t(o.cache_mib) << 20);
   const ocio::ColorPipeline pipeline;
   const std::string display = pipeline.default_display(), view = pipeline.default_view(display);
   std::vector<double> cold, warm;
@@ -106,11 +107,12 @@ void run_navigator_bench(const NavigatorBenchOptions& o) {
   }
   const Percentiles c = percentiles(cold), w = percentiles(warm);
   std::printf(
-      "\n10 thumbnails at %d x %d through OCIO (%s / %s), per lobe tab scaled to 10:\n"
+      "\n10 thumbnails at %d x %d through OCIO (%s / %s), per lobe tab scaled to 10, image cache "
+      "%d MiB:\n"
       "first view (images read from disk): median %.1f ms, p99 %.1f ms; again (cached): "
       "median %.1f ms, p99 %.1f ms\nresident memory after: %.1f MiB\n",
-      o.thumbnail_size, o.thumbnail_size, display.c_str(), view.c_str(), c.median, c.p99, w.median,
-      w.p99, resident_mib());
+      o.thumbnail_size, o.thumbnail_size, display.c_str(), view.c_str(), o.cache_mib, c.median,
+      c.p99, w.median, w.p99, resident_mib());
 }
 
 }  // namespace brdfnav::cli

@@ -3,6 +3,7 @@
 
 #include <brdfnav/core/material.h>
 #include <brdfnav/precompute/database.h>
+#include <brdfnav/thumbnails.h>
 
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@ struct NavigatorBenchOptions {
   double radius = 0.05;
   int materials = 40;  // random materials per model
   int thumbnail_size = 128;
+  int cache_mib = int(Thumbnails::kDefaultCacheBytes >> 20);
 };
 void run_navigator_bench(const NavigatorBenchOptions& options);
 

@@ -178,6 +178,9 @@ void add_bench_commands(CLI::App& app) {
   nav->add_option("--thumbnail-size", n->thumbnail_size, "Thumbnail width and height")
       ->capture_default_str()
       ->check(CLI::Range(8, 1024));
+  nav->add_option("--cache-mib", n->cache_mib, "The thumbnails' image cache budget (MiB)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 65536));
   nav->callback([n] { run_navigator_bench(*n); });
 
   auto* load = bench->add_subcommand(

@@ -1,6 +1,7 @@
 #include <brdfnav/thumbnails.h>
 
 #include <brdfnav/core/cube_root.h>
+#include <brdfnav/precompute/parallel_for.h>
 
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -41,25 +42,37 @@ std::size_t Thumbnails::cached_bytes() const {
   return cached_bytes_;
 }
 
-std::shared_ptr<const Image> Thumbnails::image(Key key) const {
+std::vector<std::shared_ptr<const Image>> Thumbnails::images(const std::vector<Key>& keys) const {
+  std::vector<std::shared_ptr<const Image>> out(keys.size());
+  std::vector<std::size_t> missing;
   {
     std::lock_guard lock(mutex_);
-    if (auto it = cache_.find(key); it != cache_.end()) {
-      uses_.splice(uses_.begin(), uses_, it->second.use);
-      return it->second.image;
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      if (auto it = cache_.find(keys[i]); it != cache_.end()) {
+        uses_.splice(uses_.begin(), uses_, it->second.use);
+        out[i] = it->second.image;
+      } else {
+        missing.push_back(i);
+      }
     }
   }
-  // Read outside the lock: other threads' thumbnails need not wait for this file.
+  // Read outside the lock, so that other threads' thumbnails need not wait for these files, and
+  // on every core: decoding the files is most of a first view (a He thumbnail blends 64).
+  parallel_for(missing.size(), worker_threads(0),
+               [&](std::size_t j) { out[missing[j]] = read(keys[missing[j]]); });
+  for (std::size_t i : missing) out[i] = keep(keys[i], std::move(out[i]));
+  return out;
+}
+
+std::shared_ptr<const Image> Thumbnails::read(Key key) const {
   const auto path = key.first < 0
                         ? database_.diffuse_path()
                         : database_.image_path(static_cast<ModelId>(key.first), key.second);
-  Image img;
   try {
-    img = resampled(read_image(path), resolution_);
+    return std::make_shared<const Image>(resampled(read_image(path), resolution_));
   } catch (const ImageError& e) {
     throw DatabaseError(e.what());
   }
-  return keep(key, std::make_shared<const Image>(std::move(img)));
 }
 
 std::shared_ptr<const Image> Thumbnails::keep(Key key, std::shared_ptr<const Image> image) const {
@@ -85,25 +98,28 @@ Image Thumbnails::render(const Material& m) const {
   if (!embedding)
     throw DatabaseError(database_.dir().string() + ": holds no model '" +
                         std::string(model_info(m.model).name) + "'");
-  const std::shared_ptr<const Image> diffuse = image({-1, 0});
-  const std::size_t n = diffuse->rgba.size();
+  const std::vector<ParamGrid::Corner> corners = embedding->grid().cubic_corners(m.params);
+  std::vector<Key> keys{kDiffuse};
+  for (const ParamGrid::Corner& c : corners) keys.push_back({static_cast<int>(m.model), c.node});
+  const std::vector<std::shared_ptr<const Image>> images = this->images(keys);
+  const Image& diffuse = *images[0];
+  const std::size_t n = diffuse.rgba.size();
   // Per RGBA lane: the alpha lane gets 0 from both terms and is set from the mask at the end.
   const float rho_d[4] = {float(m.rho_d[0]), float(m.rho_d[1]), float(m.rho_d[2]), 0.f};
   const float rho_s[4] = {float(m.rho_s[0]), float(m.rho_s[1]), float(m.rho_s[2]), 0.f};
   // Single precision in flat loops the compiler vectorises: a He material blends 64 corners.
   std::vector<float> root(n, 0.f), linear(n);
-  for (const ParamGrid::Corner& c : embedding->grid().cubic_corners(m.params)) {
-    const std::shared_ptr<const Image> spec = image({static_cast<int>(m.model), c.node});
-    const float* d = diffuse->rgba.data();
-    const float* sp = spec->rgba.data();
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    const float* d = diffuse.rgba.data();
+    const float* sp = images[k + 1]->rgba.data();
     for (std::size_t i = 0; i < n; ++i) linear[i] = rho_d[i % 4] * d[i] + rho_s[i % 4] * sp[i];
-    const auto w = static_cast<float>(c.weight);
+    const auto w = static_cast<float>(corners[k].weight);
     for (std::size_t i = 0; i < n; ++i) root[i] += w * cube_root(linear[i]);
   }
   Image out(resolution_, resolution_);
   for (std::size_t i = 0; i < n; ++i) {
     const float r = std::max(root[i], 0.f);
-    out.rgba[i] = i % 4 == 3 ? diffuse->rgba[i] : r * r * r;
+    out.rgba[i] = i % 4 == 3 ? diffuse.rgba[i] : r * r * r;
   }
   return out;
 }

@@ -1,7 +1,7 @@
 // precompute_database(): the build of a database in three resumable phases (render, embed, fit)
 // and its atomic completion (manifest, rename).
+#include <brdfnav/precompute/parallel_for.h>
 #include "database_format.h"
-#include "parallel_for.h"
 
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/precompute/render.h>

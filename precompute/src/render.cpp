@@ -1,7 +1,7 @@
 #include <brdfnav/precompute/render.h>
 
+#include <brdfnav/precompute/parallel_for.h>
 #include "geometry.h"
-#include "parallel_for.h"
 #include "quadrature.h"
 
 #include <cstdio>

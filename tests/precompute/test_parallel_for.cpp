@@ -1,7 +1,8 @@
-// parallel_for() (precompute/src/parallel_for.h), which the renderer, the PCA and the conversion
-// fits run on: every task once, on a worker id below the thread count, progress on the calling
-// thread only and ending at the count, and the first exception rethrown after the workers stop.
-#include "parallel_for.h"
+// parallel_for() (brdfnav/precompute/parallel_for.h), which the renderer, the PCA and the
+// conversion fits run on: every task once, on a worker id below the thread count, progress on the
+// calling thread only and ending at the count, and the first exception rethrown after the workers
+// stop.
+#include <brdfnav/precompute/parallel_for.h>
 
 #include <gtest/gtest.h>
 

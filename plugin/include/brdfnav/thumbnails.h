@@ -17,6 +17,7 @@
 #include <memory>
 #include <mutex>
 #include <utility>
+#include <vector>
 
 namespace brdfnav {
 
@@ -45,8 +46,12 @@ class Thumbnails {
     std::shared_ptr<const Image> image;
     std::list<Key>::iterator use;  // its place in uses_
   };
-  // The image at thumbnail resolution, read and resampled on first use, then cached.
-  std::shared_ptr<const Image> image(Key key) const;
+  static constexpr Key kDiffuse{-1, 0};
+  // The images of `keys` at thumbnail resolution: the cached ones, and the others read (in
+  // parallel) and cached.
+  std::vector<std::shared_ptr<const Image>> images(const std::vector<Key>& keys) const;
+  // One database image, read and resampled to thumbnail resolution.
+  std::shared_ptr<const Image> read(Key key) const;
   // Holds `image` as the most recently used; drops the least recently used over the budget.
   std::shared_ptr<const Image> keep(Key key, std::shared_ptr<const Image> image) const;
 

@@ -1,4 +1,5 @@
-// parallel_for(): independent tasks spread over a few threads, for the precompute's phases.
+// parallel_for(): independent tasks spread over a few threads, for the precompute's phases and the
+// thumbnails' reads.
 #pragma once
 
 #include <algorithm>
