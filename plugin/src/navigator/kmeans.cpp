@@ -1,10 +1,11 @@
 #include "navigator/kmeans.h"
 
+#include <brdfnav/precompute/parallel_for.h>
+
 #include <algorithm>
 #include <limits>
 #include <numeric>
 #include <random>
-#include <thread>
 
 namespace brdfnav::nav {
 
@@ -67,10 +68,9 @@ void assign(const Eigen::MatrixXd& points, const Eigen::MatrixXd& centres, int t
     for (Eigen::Index i = first; i < last; ++i) labels[i] = nearest(points, centres, i).first;
   };
   const Eigen::Index workers = std::clamp<Eigen::Index>(threads, 1, n);
-  std::vector<std::jthread> pool;
-  for (Eigen::Index w = 1; w < workers; ++w)
-    pool.emplace_back(run, n * w / workers, n * (w + 1) / workers);
-  run(0, n / workers);
+  parallel_for(std::size_t(workers), int(workers), [&](std::size_t w) {
+    run(n * Eigen::Index(w) / workers, n * Eigen::Index(w + 1) / workers);
+  });
 }
 
 // Centroids of the clusters, in point order; an empty cluster keeps its centre.
