@@ -103,13 +103,15 @@ Material check_held(const Database& db, Material m) {
   return m;
 }
 
-// YAML limits an implicit key to 1024 characters; yaml-cpp fails a longer one as a syntax error.
-constexpr std::size_t kMaxYamlKeyBytes = 1024;
+// YAML limits an implicit key to 1024 characters of its text, quotes and escapes included;
+// yaml-cpp fails a longer one as a syntax error (a key of 1023 bytes is 1025 characters quoted,
+// a control character 6 escaped). Bytes are counted, which is stricter for UTF-8.
+constexpr std::size_t kMaxYamlKeyText = 1024;
 
 const std::string* overlong_key(const json& value) {
   if (!value.is_structured()) return nullptr;
   for (auto it = value.begin(); it != value.end(); ++it) {
-    if (value.is_object() && it.key().size() > kMaxYamlKeyBytes) return &it.key();
+    if (value.is_object() && json(it.key()).dump().size() > kMaxYamlKeyText) return &it.key();
     if (const std::string* key = overlong_key(*it)) return key;
   }
   return nullptr;

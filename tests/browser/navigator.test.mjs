@@ -378,9 +378,16 @@ test('bad API requests get 400 naming the field, and the server keeps serving', 
       /^material: expected an object/],
     ['/api/neighbors', body({ material: { params: { a: [[[[[1]]]]] } }, radius: 1, tab: 'lobe' }),
       /^material: nested too deeply/],
-    // Valid JSON, but a key over YAML's 1024-character limit for implicit keys.
+    // Valid JSON, but a key over YAML's 1024-character limit for implicit keys: quotes and
+    // escapes count (the 1024-byte key was a fuzzer's, tests/corpus/serve_request/crashes/).
     ['/api/neighbors', body({ material: { ...m, [']'.repeat(1100)]: 1 }, radius: 0.02, tab: 'lobe' }),
       /^material: unknown key of 1100 bytes "\]\]\]/],
+    ['/api/neighbors', body({ material: { ...m, [']'.repeat(1023)]: 1 }, radius: 0.02, tab: 'lobe' }),
+      /^material: unknown key of 1023 bytes/],
+    ['/api/neighbors', body({ material: { ...m, ['a'.repeat(1000) + '\u0001'.repeat(4)]: 1 },
+      radius: 0.02, tab: 'lobe' }), /^material: unknown key of 1004 bytes/],
+    ['/api/neighbors', body({ material: { ...m, [']'.repeat(1022)]: 1 }, radius: 0.02, tab: 'lobe' }),
+      /^material:\d+: \]{1022}: unknown key/],
     ['/api/neighbors', '{"material": ', /^body: malformed JSON/],
     ['/api/neighbors', '[1, 2]', /^body: expected a JSON object/],
     ['/api/neighbors', ' '.repeat(70 * 1024), /^body: larger than 65536 bytes/],
