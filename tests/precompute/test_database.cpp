@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 // same as for the named profiles, at a size that keeps each test process (ctest runs every case
 // in its own process, each building the fixture) at a few seconds.
 Profile tiny_profile() {
-  Profile p = make_profile("test");
+  Profile p = make_profile("smoke");
   p.name = "unit";
   p.resolution = 8;
   p.pca.components = 400;  // more than the data's rank: the embedding is then lossless
