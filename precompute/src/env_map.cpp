@@ -4,6 +4,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
+#include <cstdint>
 #include <cstdio>
 
 namespace brdfnav {
@@ -18,7 +19,8 @@ std::string pixel_sha1(int width, int height, const std::vector<float>& rgb) {
 }
 
 void check_shape(const std::string& source, int width, int height) {
-  if (width <= 0 || height <= 0 || width != 2 * height)
+  // In 64 bits: a header may claim a height whose double overflows an int.
+  if (width <= 0 || height <= 0 || width != 2 * std::int64_t{height})
     throw EnvMapError(source + ": is " + std::to_string(width) + "x" + std::to_string(height) +
                       "; a latitude-longitude map must be exactly 2:1 (width = 2 * height)");
 }
