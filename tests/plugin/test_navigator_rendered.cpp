@@ -83,8 +83,11 @@ void expect_issue_bounds(const std::vector<double>& errors) {
 class NavigatorRendered : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (RenderedDatabase::get().manifest.profile == "smoke")
-      GTEST_SKIP() << "the smoke profile makes no accuracy claim";
+    const RenderedDatabase& db = RenderedDatabase::get();
+    if (db.manifest.profile == "smoke") GTEST_SKIP() << "the smoke profile makes no accuracy claim";
+    // The renderer must see what the database's images saw.
+    ASSERT_EQ(db.env.pixel_hash(), db.manifest.env_hash);
+    ASSERT_EQ(db.manifest.scene, "sphere");
   }
 };
 
