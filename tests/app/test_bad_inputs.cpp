@@ -301,6 +301,8 @@ TEST_F(BadInputs, NumericOptionsOutOfRange) {
       {"bench load --db " + db().string() + " --queries x", "--queries: Value x not in range"},
       {"bench navigator --db " + db().string() + " --materials 0",
        "--materials: Value 0 not in range"},
+      {"bench navigator --db " + db().string() + " --cache-mib 0",
+       "--cache-mib: Value 0 not in range"},
       {"bench render --repeats 0", "--repeats"},
       {"bench fits --per-model 0", "--per-model"},
   };
