@@ -120,7 +120,9 @@ struct LobeKernel {
   // ... at wi in the pixel's frame (the frame of the lobe's KernelShape::Slopes).
   Value value_local(const Vec3& wi) const {
     if (wi.z() <= 0) return zero<Value>();
-    if constexpr (kGreyLobe<L>)
+    if constexpr (requires { lobe.eval_cos(wi); })
+      return lobe.eval_cos(wi);
+    else if constexpr (kGreyLobe<L>)
       return lobe.eval(wi)[0] * wi.z();
     else
       return lobe.eval(wi) * wi.z();

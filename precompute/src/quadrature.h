@@ -96,7 +96,10 @@ class Quadrature {
     inv_major_ = 1 / major_width_, inv_minor_ = 1 / minor_width_;
     reach_ = quality.reach;
     slopes_ = shape.slopes;
-    if (slopes_) slopes_->sx *= wide, slopes_->sy *= wide;
+    if (slopes_) {
+      slopes_->sx *= wide, slopes_->sy *= wide;
+      inv_sx_ = 1 / slopes_->sx, inv_sy_ = 1 / slopes_->sy;
+    }
     extent_ = slopes_ ? outline_extent() : reach_ * major_width_;
     // Broad kernels too: the horizon cuts every lobe, and the second differences only correct
     // what is smooth at the scale of a node.
@@ -183,8 +186,9 @@ class Quadrature {
   bool within_local_slopes(const Vec3& w, double radius) const {
     const Vec3 h = w + slopes_->wo;
     if (h.z() <= 0) return false;
-    const double u = h.x() / (h.z() * slopes_->sx), v = h.y() / (h.z() * slopes_->sy);
-    return u * u + v * v <= radius * radius;
+    // (h.x / (h.z sx))^2 + (h.y / (h.z sy))^2 <= radius^2, without dividing (once per node).
+    const double u = h.x() * inv_sx_, v = h.y() * inv_sy_, r = radius * h.z();
+    return u * u + v * v <= r * r;
   }
 
   // Whether a direction within `margin` radians of `w` can be inside the window.
@@ -543,7 +547,8 @@ class Quadrature {
   double outline_area_ = 0, outline_perimeter_ = 0;
   Vec3 peak_, major_, minor_, horizon_;
   std::optional<KernelShape::Slopes> slopes_;
-  double extent_;  // largest angle between the peak and the window's edge
+  double inv_sx_ = 0, inv_sy_ = 0;  // 1 / slopes_->sx, 1 / slopes_->sy
+  double extent_;                   // largest angle between the peak and the window's edge
   double major_width_, minor_width_, inv_major_, inv_minor_, reach_, node_angle_;
   int level_, split_, hot_split_, grid_w_, grid_h_;
   double piece_share_;  // 1 / split_^2: the share of a texel's power in each of its pieces

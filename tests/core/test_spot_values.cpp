@@ -86,6 +86,15 @@ TEST(SpotWard, GeneralDirections) {
   expect_grey(lobe.eval(dir(35, 30), dir(38, 215)), 2.7836470903359807);
 }
 
+TEST(SpotWard, TheRenderersKernelIsTheLobeTimesTheCosine) {
+  const Ward lobe(std::array{0.3, 0.1});
+  const Vec3 wi = dir(35, 30);
+  // The same python value times cos(35 degrees); zero below the horizon.
+  expect_rel(lobe.bind(dir(38, 215)).eval_cos(wi), 2.7836470903359807 * wi.z());
+  EXPECT_EQ(lobe.bind(dir(38, 215)).eval_cos(dir(95, 30)), 0.0);
+  EXPECT_EQ(lobe.bind(dir(95, 215)).eval_cos(wi), 0.0);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Cook-Torrance: F(wi.h) D(h) G / (4 cos_i cos_o), Schlick F, Beckmann D,
 // G = min(1, 2 cos_h cos_o / (wo.h), 2 cos_h cos_i / (wo.h))

@@ -33,6 +33,11 @@ struct Ward {
       if (wi.z() <= 0 || scale == 0) return Rgb::Zero();
       return Rgb::Constant(gaussian(wi + wo, inv_alpha_x, inv_alpha_y) * scale / std::sqrt(wi.z()));
     }
+    // eval(wi) times cos(theta_i), the renderer's kernel, with a square root for the division.
+    double eval_cos(const Vec3& wi) const {
+      if (wi.z() <= 0 || scale == 0) return 0.0;
+      return gaussian(wi + wo, inv_alpha_x, inv_alpha_y) * scale * std::sqrt(wi.z());
+    }
   };
   Bound bind(const Vec3& wo) const {
     const double scale = wo.z() > 0 ? 1 / (4 * kPi * alpha_x * alpha_y * std::sqrt(wo.z())) : 0;
