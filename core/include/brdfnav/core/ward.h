@@ -30,13 +30,17 @@ struct Ward {
     double inv_alpha_x, inv_alpha_y;
     double scale;  // 1 / (4 pi alpha_x alpha_y sqrt(cos_o)), 0 below the horizon
     Rgb eval(const Vec3& wi) const {
-      if (wi.z() <= 0 || scale == 0) return Rgb::Zero();
-      return Rgb::Constant(gaussian(wi + wo, inv_alpha_x, inv_alpha_y) * scale / std::sqrt(wi.z()));
+      const double g = scaled_gaussian(wi);
+      return Rgb::Constant(g > 0 ? g / std::sqrt(wi.z()) : 0.0);
     }
     // eval(wi) times cos(theta_i), the renderer's kernel, with a square root for the division.
     double eval_cos(const Vec3& wi) const {
-      if (wi.z() <= 0 || scale == 0) return 0.0;
-      return gaussian(wi + wo, inv_alpha_x, inv_alpha_y) * scale * std::sqrt(wi.z());
+      const double g = scaled_gaussian(wi);
+      return g > 0 ? g * std::sqrt(wi.z()) : 0.0;
+    }
+    // f(wi) sqrt(cos_i): 0 below either horizon.
+    double scaled_gaussian(const Vec3& wi) const {
+      return wi.z() <= 0 || scale == 0 ? 0.0 : gaussian(wi + wo, inv_alpha_x, inv_alpha_y) * scale;
     }
   };
   Bound bind(const Vec3& wo) const {
