@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -46,9 +47,12 @@ TEST(ParallelFor, ReportsProgressOnTheCallingThreadOnly) {
 
 TEST(ParallelFor, StopsAtTheFirstExceptionAndRethrowsIt) {
   std::atomic<int> started{0};
+  // Every other task takes a millisecond: with instant tasks, the other threads could run all
+  // 1000 before the failing one is scheduled again to report (seen on a loaded 2-core machine).
   const auto task = [&](std::size_t i) {
     ++started;
     if (i == 10) throw std::runtime_error("task 10 failed");
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
   };
   EXPECT_THROW(parallel_for(1000, 1, task), std::runtime_error);
   EXPECT_EQ(started, 11);  // one thread: tasks 0 to 10, nothing after the failure
