@@ -2,6 +2,8 @@
 // direction at one pixel) and the rough shape of each, which guides the quadrature's refinement.
 #pragma once
 
+#include "vector_exp.h"
+
 #include <brdfnav/core/closure.h>
 
 #include <array>
@@ -113,6 +115,7 @@ auto bind_wo(const L& lobe, const Vec3& wo) {
 template <typename L>
 struct LobeKernel {
   using Value = std::conditional_t<kGreyLobe<L>, double, Rgb>;
+  using Bound = decltype(bind_wo(std::declval<const L&>(), Vec3()));
   LobeKernel(const L& lobe, const Frame& frame, const Vec3& wo)
       : lobe(bind_wo(lobe, wo)), frame(frame) {}
 
@@ -127,9 +130,21 @@ struct LobeKernel {
     else
       return lobe.eval(wi) * wi.z();
   }
+  // value_local() at n local directions at once, stored as x[0..n), y = x + n, z = x + 2n, for
+  // lobes that take arrays (Ward's): K is then 0 or NaN below the horizon (Quadrature checks).
+  void values_local(const double* x, Eigen::Index n, double* out) const requires
+      requires(const Bound& b, const Eigen::Map<const Eigen::ArrayXd>& a,
+               Eigen::Ref<Eigen::ArrayXd> o) {
+    b.eval_cos(a, a, a, o, exp_in_place);
+  }
+  {
+    using Column = Eigen::Map<const Eigen::ArrayXd>;
+    lobe.eval_cos(Column(x, n), Column(x + n, n), Column(x + 2 * n, n),
+                  Eigen::Map<Eigen::ArrayXd>(out, n), exp_in_place);
+  }
 
  private:
-  decltype(bind_wo(std::declval<const L&>(), Vec3())) lobe;
+  Bound lobe;
   Frame frame;
 };
 

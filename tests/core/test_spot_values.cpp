@@ -11,6 +11,7 @@
 
 #include <array>
 #include <random>
+#include <vector>
 
 namespace brdfnav {
 namespace {
@@ -93,6 +94,28 @@ TEST(SpotWard, TheRenderersKernelIsTheLobeTimesTheCosine) {
   expect_rel(lobe.bind(dir(38, 215)).eval_cos(wi), 2.7836470903359807 * wi.z());
   EXPECT_EQ(lobe.bind(dir(38, 215)).eval_cos(dir(95, 30)), 0.0);
   EXPECT_EQ(lobe.bind(dir(95, 215)).eval_cos(wi), 0.0);
+}
+
+TEST(SpotWard, TheKernelOverAnArrayOfDirectionsIsTheKernelAtEach) {
+  const Ward::Bound bound = Ward(std::array{0.05, 0.005}).bind(dir(38, 215));
+  // Directions around the mirror one, in its narrow lobe and out in its tails, and two below
+  // the horizon; the array form takes them as columns of x, y and z.
+  std::vector<Vec3> wi;
+  for (double theta : {36.0, 37.9, 38.0, 38.1, 40.0, 60.0, 95.0})
+    for (double phi : {30.0, 34.0, 35.0, 36.0, 90.0}) wi.push_back(dir(theta, phi));
+  const auto n = static_cast<Eigen::Index>(wi.size());
+  Eigen::ArrayXd x(n), y(n), z(n), out(n);
+  for (Eigen::Index i = 0; i < n; ++i) x[i] = wi[i].x(), y[i] = wi[i].y(), z[i] = wi[i].z();
+  bound.eval_cos(x, y, z, out, [](Eigen::Ref<Eigen::ArrayXd> v) {
+    for (double& e : v) e = std::exp(e);
+  });
+  int lit = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double expected = bound.eval_cos(wi[i]);
+    EXPECT_NEAR(out[i], expected, 1e-14 * expected) << "direction " << i;
+    lit += expected > 1e-3;
+  }
+  EXPECT_GE(lit, 3);  // the comparison covers the lobe, not only its zero tails
 }
 
 // ---------------------------------------------------------------------------------------------

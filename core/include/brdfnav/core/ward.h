@@ -38,6 +38,18 @@ struct Ward {
       const double g = scaled_gaussian(wi);
       return g > 0 ? g * std::sqrt(wi.z()) : 0.0;
     }
+    // eval_cos() at many local directions (x, y, z) at once, into `out`, with `exp_in_place`
+    // exponentiating an array (the renderer's runs a vector of them at a time). Above the horizon
+    // (z > 0, wo.z > 0) h.z is positive; z <= 0 gives 0, or NaN where wi is exactly -wo.
+    template <typename A, typename Exp>
+    void eval_cos(const Eigen::ArrayBase<A>& x, const Eigen::ArrayBase<A>& y,
+                  const Eigen::ArrayBase<A>& z, Eigen::Ref<Eigen::ArrayXd> out,
+                  Exp&& exp_in_place) const {
+      out = (-((x + wo.x()) * inv_alpha_x).square() - ((y + wo.y()) * inv_alpha_y).square())
+                .cwiseQuotient((z + wo.z()).square());
+      exp_in_place(out);
+      out *= scale * z.cwiseMax(0.0).sqrt();
+    }
     // f(wi) sqrt(cos_i): 0 below either horizon.
     double scaled_gaussian(const Vec3& wi) const {
       return wi.z() <= 0 || scale == 0 ? 0.0 : gaussian(wi + wo, inv_alpha_x, inv_alpha_y) * scale;
