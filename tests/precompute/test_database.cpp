@@ -276,6 +276,28 @@ TEST(Database, ResumeReusesFinishedWorkAndIsByteIdentical) {
   EXPECT_EQ(tree(dir), tree(f.db));
 }
 
+// The render phase writes a unit's images while the next one renders; an image's progress is
+// reported once its file is in place, every image once, up to the total.
+TEST(Database, RenderProgressFollowsTheWrittenImages) {
+  const Fixture& f = fixture();
+  const fs::path dir = scratch("progress"), work = dir.string() + ".partial";
+  std::vector<std::size_t> reported;
+  std::size_t render_total = 0;
+  PrecomputeRequest request{tiny_profile(), dir, false, 0, {}};
+  request.observer.progress = [&](const std::string& phase, std::size_t done, std::size_t total) {
+    if (phase != "render" || done == 0) return;
+    std::size_t files = 0;
+    for (const auto& e : fs::recursive_directory_iterator(work))
+      files += e.path().extension() == ".exr";
+    EXPECT_GE(files, done) << "progress " << done << " before its image was written";
+    reported.push_back(done);
+    render_total = total;
+  };
+  precompute_database(request, f.env, f.scene);
+  ASSERT_EQ(reported.size(), render_total);
+  for (std::size_t i = 0; i < reported.size(); ++i) EXPECT_EQ(reported[i], i + 1);
+}
+
 // Two shards render disjoint halves of the images; merged, they give the reference database
 // byte for byte. A merge with a shard missing or given twice is refused.
 TEST(Database, ShardsMergeIntoTheSameDatabase) {
