@@ -25,8 +25,8 @@ std::size_t blocks(std::size_t n, std::size_t size) {
   return (n + size - 1) / size;
 }
 
-// c = op(a) b + beta c, through OpenBLAS's sgemm: the products below are the embedding's whole
-// cost, and its kernels, chosen for the CPU at run time, ran 2.4-3.5 times as fast as Eigen's
+// c = op(a) b + beta c, through OpenBLAS's sgemm: the products below are most of the embedding's
+// cost, and its kernels, chosen for the CPU at run time, ran 2.5 times as fast as Eigen's
 // (built for the baseline x86-64) on this machine (bench/RESULTS.md). OpenBLAS's serial build:
 // the threads are parallel_for's, each product inside one task.
 void gemm(bool transpose_a, const Eigen::Ref<const MatrixXf>& a,
