@@ -4,8 +4,9 @@
 
 #include <cmath>
 
-// glibc's 4-lane AVX2 exp (the x86-64 vector function ABI name of exp, variant 'd': AVX2).
-extern "C" __m256d _ZGVdN4v_exp(__m256d x);
+// glibc's 4-lane AVX2 exp (the x86-64 vector function ABI name of exp, variant 'd': AVX2). Its
+// arguments travel in AVX registers, so the declaration carries the target too (clang insists).
+extern "C" __attribute__((target("avx2"))) __m256d _ZGVdN4v_exp(__m256d x);
 
 namespace brdfnav {
 
