@@ -303,8 +303,9 @@ class Quadrature {
   }
 
   // window_value() at every node of a slope window at once, for kernels that take arrays of
-  // directions: Ward's exp then runs a packet at a time (Eigen), a third of its time before.
+  // directions (Ward's): array expressions, and the exponentials four at a time (vector_exp.h).
   void slope_window_values(QuadratureScratch& s, double margin) const {
+    static_assert(std::is_same_v<Value, double>, "K of the nodes at once is grey");
     const auto n = static_cast<Eigen::Index>(s.power.size());
     double* world = s.directions.data();
     double* local = world + 3 * n;
