@@ -61,15 +61,10 @@ struct PendingFile {
 // profile, all of it with the renderer's threads waiting) on a thread of its own while the next
 // unit renders. One unit in flight; its errors are rethrown by the next write() or by finish().
 // `written` is called once per file written, on the caller's thread, as the progress observer
-// expects.
+// expects. If a render fails, destruction waits for the write in flight (std::async's future).
 class ImageWriter {
  public:
   explicit ImageWriter(std::function<void()> written) : written_(std::move(written)) {}
-  ImageWriter(const ImageWriter&) = delete;
-  ImageWriter& operator=(const ImageWriter&) = delete;
-  ~ImageWriter() {
-    if (in_flight_.valid()) in_flight_.wait();  // a render failed: let the write end cleanly
-  }
 
   void write(std::vector<PendingFile> files) {
     finish();
