@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 namespace brdfnav {
 
@@ -39,6 +41,30 @@ EnvPyramid::EnvPyramid(const EnvMap& env) {
   while (levels_.back().width > 2 || levels_.back().height > 1)
     levels_.push_back(half_of(levels_.back()));
   for (Level& l : levels_) l.luminance = {};
+  hot_groups_.resize(levels_.size());
+  for (int level = 1; level < level_count(); ++level) hot_groups_[level] = group_hot_texels(level);
+}
+
+std::vector<EnvPyramid::HotGroup> EnvPyramid::group_hot_texels(int level) const {
+  // Node (x >> level, y >> level) of `level` holds level-0 texel (x, y). Groups in node order,
+  // members summed in hot_'s order: deterministic.
+  std::map<std::pair<int, int>, std::vector<const HotTexel*>> members;
+  for (const HotTexel& t : hot_) members[{t.y >> level, t.x >> level}].push_back(&t);
+  std::vector<HotGroup> groups;
+  for (const auto& [node, texels] : members) {
+    HotGroup g{Vec3::Zero(), Rgb::Zero(), 0.0};
+    for (const HotTexel* t : texels) {
+      const Rgb power = t->radiance * t->solid_angle;
+      g.power += power;
+      g.centroid += luminance(power) * t->centroid;
+    }
+    g.centroid.normalize();
+    for (const HotTexel* t : texels)
+      g.radius = std::max(g.radius, std::acos(std::clamp(g.centroid.dot(t->centroid), -1.0, 1.0)));
+    g.radius += node_angle(0);  // a texel's own extent around its centroid
+    groups.push_back(g);
+  }
+  return groups;
 }
 
 void EnvPyramid::build_texels(const EnvMap& env) {

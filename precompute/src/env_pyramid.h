@@ -41,6 +41,22 @@ class EnvPyramid {
     double solid_angle;
   };
   const std::vector<HotTexel>& hot() const { return hot_; }
+  // The hot texels merged by the nodes of one level, for lobes broad enough not to tell them
+  // apart: their summed power, their luminance-weighted centroid and the largest angle from it
+  // to a point of a member texel.
+  struct HotGroup {
+    Vec3 centroid;
+    Rgb power;
+    double radius;
+  };
+  // Level >= 1, in node order (level 0 is hot() itself).
+  const std::vector<HotGroup>& hot_groups(int level) const { return hot_groups_[level]; }
+  // The coarsest level whose nodes are at most `step` radians high (0 if none is).
+  int coarsest_level(double step) const {
+    int level = 0;
+    while (level + 1 < level_count() && node_angle(level + 1) <= step) ++level;
+    return level;
+  }
 
  private:
   // per node: centroid xyz, power rgb
@@ -52,8 +68,10 @@ class EnvPyramid {
   };
   void build_texels(const EnvMap& env);
   Level half_of(const Level& fine) const;
+  std::vector<HotGroup> group_hot_texels(int level) const;
 
   std::vector<HotTexel> hot_;
+  std::vector<std::vector<HotGroup>> hot_groups_;  // per level; level 0 empty
   std::vector<Level> levels_;
 };
 

@@ -123,15 +123,18 @@ class Quadrature {
     if (slopes_ && !ellipse_ && cap_area(extent_) > kPolygonCost * wanted_step * wanted_step)
       slope_polygon();
     const double step = coarsened_step(wanted_step, quality);
-    level_ = 0;
-    while (level_ + 1 < env.level_count() && env.node_angle(level_ + 1) <= step) ++level_;
+    level_ = env.coarsest_level(step);
     auto pieces_for = [&](double piece) {
       return std::clamp(static_cast<int>(std::ceil(env.node_angle(0) / piece)), 1,
                         quality.max_split);
     };
     split_ = level_ > 0 ? 1 : pieces_for(step);
     piece_share_ = 1.0 / (split_ * split_);
-    hot_split_ = pieces_for(shape.node_width / quality.hot_texels_per_width);
+    const double hot_step = shape.node_width / quality.hot_texels_per_width;
+    hot_split_ = pieces_for(hot_step);
+    // Hot texels merge into nodes half the size of the pieces the lobe would cut them into: at
+    // the pieces' own size, Blinn-Phong n = 300's accuracy ratio rose from 0.030 to 0.034.
+    hot_level_ = env.coarsest_level(hot_step / 2);
     grid_w_ = env.width(level_) * split_;
     grid_h_ = env.height(level_) * split_;
     node_angle_ = kPi / grid_h_;
@@ -139,7 +142,11 @@ class Quadrature {
 
   Sum integrate(QuadratureScratch& scratch) const {
     Sum sum = window_sum(scratch);
-    for (const EnvPyramid::HotTexel& t : env_.hot()) sum += hot_sum(t);
+    if (hot_level_ == 0) {
+      for (const EnvPyramid::HotTexel& t : env_.hot()) sum += hot_sum(t);
+    } else {
+      for (const EnvPyramid::HotGroup& g : env_.hot_groups(hot_level_)) sum += hot_group_sum(g);
+    }
     return sum;
   }
 
@@ -579,6 +586,14 @@ class Quadrature {
     return weighted(t.radiance, Value(sum * (t.solid_angle / (n * n))));
   }
 
+  // The hot texels of one node of hot_level_ as one: a lobe that needs no finer pieces than that
+  // node sees them at their centroid, as it sees the nodes of the rest of the map. The 106 hot
+  // texels of interior.exr, a few lamps, fall into 21 nodes of level 2 and 11 of level 4.
+  Sum hot_group_sum(const EnvPyramid::HotGroup& g) const {
+    if (!in_window(g.centroid, g.radius, 4 * reach_)) return zero<Sum>();
+    return weighted(g.power, value(g.centroid));
+  }
+
   const EnvPyramid& env_;
   const Kernel& kernel_;
   double peak_theta_;  // the peak's polar angle
@@ -593,6 +608,7 @@ class Quadrature {
   double extent_;                   // largest angle between the peak and the window's edge
   double major_width_, minor_width_, inv_major_, inv_minor_, reach_, node_angle_;
   int level_, split_, hot_split_, grid_w_, grid_h_;
+  int hot_level_;       // hot texels merged by the nodes of this level (0: one by one)
   double piece_share_;  // 1 / split_^2: the share of a texel's power in each of its pieces
   Visible visible_;
 };

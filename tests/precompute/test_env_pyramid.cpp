@@ -1,0 +1,79 @@
+// The environment pyramid's hot texels merged by the nodes of each level
+// (precompute/src/env_pyramid.h): every hot texel in one group, the power kept, each group's
+// radius around its members, and the level chosen for a node size.
+#include "env_pyramid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace brdfnav {
+namespace {
+
+// A dim map with two lamps of several texels each and three single bright texels.
+EnvMap map_with_lamps() {
+  const int w = 256, h = 128;
+  std::vector<float> rgb(3 * w * h, 0.1f);
+  auto light = [&](int x, int y, float r, float g, float b) {
+    float* p = &rgb[3 * (static_cast<std::size_t>(y) * w + x)];
+    p[0] = r, p[1] = g, p[2] = b;
+  };
+  for (int y = 32; y < 36; ++y)
+    for (int x = 40; x < 45; ++x) light(x, y, 2e4f + 100 * x, 1.5e4f, 1e4f + 50 * y);
+  for (int y = 90; y < 92; ++y)
+    for (int x = 250; x < 256; ++x) light(x, y, 8e3f, 9e3f, 1.2e4f);  // up to the seam
+  light(0, 90, 8e3f, 9e3f, 1.2e4f);
+  light(128, 2, 3e4f, 3e4f, 3e4f);  // by the north pole
+  light(200, 64, 5e3f, 1e4f, 5e3f);
+  return EnvMap(w, h, std::move(rgb), "lamps");
+}
+
+double angle(const Vec3& a, const Vec3& b) {
+  return std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+}
+
+TEST(EnvPyramid, HotGroupsHoldEveryHotTexelWithItsPower) {
+  const EnvPyramid pyramid(map_with_lamps());
+  const auto& hot = pyramid.hot();
+  ASSERT_EQ(hot.size(), 4u * 5 + 2 * 6 + 3);
+  Rgb total = Rgb::Zero();
+  for (const auto& t : hot) total += t.radiance * t.solid_angle;
+  std::size_t previous = hot.size();
+  for (int level = 1; level < pyramid.level_count(); ++level) {
+    const auto& groups = pyramid.hot_groups(level);
+    EXPECT_LE(groups.size(), previous) << level;
+    previous = groups.size();
+    Rgb power = Rgb::Zero();
+    for (const auto& g : groups) {
+      power += g.power;
+      EXPECT_NEAR(g.centroid.norm(), 1, 1e-12);
+      EXPECT_GE(g.radius, pyramid.node_angle(0));
+    }
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(power[c], total[c], 1e-12 * total[c]) << level;
+    // Each texel is within the radius of the group of its node.
+    for (const auto& t : hot) {
+      bool inside = false;
+      for (const auto& g : groups)
+        inside =
+            inside || angle(g.centroid, t.centroid) + pyramid.node_angle(0) <= g.radius + 1e-12;
+      EXPECT_TRUE(inside) << "texel " << t.x << ", " << t.y << " at level " << level;
+    }
+  }
+  // The first lamp spans 5 x 4 texels from (40, 32): 3 x 2 nodes of level 1, one of level 3. The
+  // seam's lamp stays split in two at every level: its texels are at both ends of the rows.
+  EXPECT_EQ(pyramid.hot_groups(1).size(), 6u + 4 + 2);
+  EXPECT_EQ(pyramid.hot_groups(3).size(), 1u + 2 + 2);
+}
+
+TEST(EnvPyramid, CoarsestLevelIsTheLargestNodeWithinTheStep) {
+  const EnvPyramid pyramid(map_with_lamps());
+  EXPECT_EQ(pyramid.coarsest_level(0.5 * pyramid.node_angle(0)), 0);
+  for (int level = 0; level + 1 < pyramid.level_count(); ++level) {
+    EXPECT_EQ(pyramid.coarsest_level(pyramid.node_angle(level)), level);
+    EXPECT_EQ(pyramid.coarsest_level(0.99 * pyramid.node_angle(level + 1)), level);
+  }
+  EXPECT_EQ(pyramid.coarsest_level(100), pyramid.level_count() - 1);
+}
+
+}  // namespace
+}  // namespace brdfnav
