@@ -20,6 +20,10 @@ const Rgb& inv_lambda_squared() {
   }();
   return k;
 }
+const Rgb& lambda_squared() {
+  static const Rgb k = inv_lambda_squared().inverse();
+  return k;
+}
 const Rgb& log_inv_lambda_squared() {
   static const Rgb log_k = inv_lambda_squared().log();
   return log_k;
@@ -160,6 +164,11 @@ double channel_distribution_sum(double g, double log_g, double t) {
 // log() for the three ln(g).
 Rgb distribution_sum_per_wavelength(double g_scale, double t_scale) {
   const Rgb& k = inv_lambda_squared();
+  // Red's g is the smallest. Once it is past the blend, every channel is at the rough limit
+  // exp(-t / g) / g, whose t / g = t_scale / g_scale is the same in all three: one exp() for the
+  // three (the rough and medium lobes, most of the time).
+  static_assert(He::kLambda[0] > He::kLambda[1] && He::kLambda[1] > He::kLambda[2]);
+  if (g_scale * k[0] >= kBlendHi) return std::exp(-t_scale / g_scale) / g_scale * lambda_squared();
   const Rgb& log_k = log_inv_lambda_squared();
   const double log_g_scale = std::log(g_scale);
   Rgb out;
