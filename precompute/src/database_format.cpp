@@ -27,6 +27,7 @@ std::string model_name(ModelId id) {
 void emit_settings(YAML::Emitter& out, const Profile& p, const EnvMap& env, const Scene& scene) {
   out << YAML::Key << "brdfnav_database" << YAML::Value << kDatabaseFormatVersion;
   out << YAML::Key << "generator" << YAML::Value << "brdfnav " BRDFNAV_VERSION;
+  out << YAML::Key << "renderer_revision" << YAML::Value << kRendererRevision;
   out << YAML::Key << "profile" << YAML::Value << p.name;
   out << YAML::Key << "resolution" << YAML::Value << p.resolution;
   out << YAML::Key << "scene" << YAML::Value << scene.description();

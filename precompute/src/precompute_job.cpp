@@ -134,7 +134,7 @@ class Job {
       if (read_text(settings_path) != settings)
         throw DatabaseError(settings_path.string() +
                             ": the unfinished database was started with other settings (profile, "
-                            "environment, scene or resolution); remove " +
+                            "environment, scene, resolution or renderer revision); remove " +
                             work_.string() + " or run without --resume");
       log("resuming in " + work_.string());
     } else {
@@ -412,7 +412,8 @@ void take_shard(const fs::path& shard, const std::string& settings, const fs::pa
   const std::string file = (shard / db::kShardFile).string();
   if (read_text(file).rfind(settings, 0) != 0)
     throw DatabaseError(file + ": the shard was made with other settings than " +
-                        "the first shard (profile, environment, scene or resolution)");
+                        "the first shard (profile, environment, scene, resolution or renderer "
+                        "revision)");
   const std::string name = std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count);
   if (seen.empty()) seen.assign(std::size_t(o.shard_count), false);
   if (std::size_t(o.shard_count) != seen.size())

@@ -328,6 +328,7 @@ ImageMetadata render_metadata(const Renderer& renderer, const Material* material
                   {"brdfnav:env_sha1", renderer.env().pixel_hash()},
                   {"brdfnav:scene", renderer.scene().description()},
                   {"brdfnav:resolution", std::to_string(renderer.resolution())},
+                  {"brdfnav:renderer_revision", std::to_string(kRendererRevision)},
                   {"brdfnav:quality", quality}};
   if (material) m.emplace_back("brdfnav:material", format_material_spec(*material));
   return m;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace brdfnav {
@@ -240,17 +241,23 @@ TEST(Database, RefusesToOverwriteAnExistingDirectory) {
                DatabaseError);
 }
 
+// Starts the tiny build into `dir` and interrupts it once the first image is written.
+void interrupt_after_the_first_image(const fs::path& dir) {
+  const Fixture& f = fixture();
+  PrecomputeRequest request{tiny_profile(), dir, false, 0, {}};
+  request.observer.progress = [](const std::string& phase, std::size_t done, std::size_t) {
+    if (phase == "render" && done == 1) throw Interrupted{};
+  };
+  EXPECT_THROW(precompute_database(request, f.env, f.scene), Interrupted);
+}
+
 // An interrupted build whose work directory holds some finished units (copied from the
 // reference, as a build that got further would have left them) resumes to a database
 // byte-identical to the uninterrupted one; a resume with other settings is refused.
 TEST(Database, ResumeReusesFinishedWorkAndIsByteIdentical) {
   const Fixture& f = fixture();
   const fs::path dir = scratch("resumed"), work = dir.string() + ".partial";
-  PrecomputeRequest request{tiny_profile(), dir, false, 0, {}};
-  request.observer.progress = [](const std::string& phase, std::size_t done, std::size_t) {
-    if (phase == "render" && done == 1) throw Interrupted{};
-  };
-  EXPECT_THROW(precompute_database(request, f.env, f.scene), Interrupted);
+  interrupt_after_the_first_image(dir);
   ASSERT_TRUE(fs::exists(work / "diffuse.exr"));
   ASSERT_FALSE(fs::exists(dir));
   fs::copy(f.db, work, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
@@ -274,6 +281,30 @@ TEST(Database, ResumeReusesFinishedWorkAndIsByteIdentical) {
   EXPECT_FALSE(fs::exists(work));
   EXPECT_NE(std::find(log.begin(), log.end(), "render: 11 images, 10 reused"), log.end());
   EXPECT_EQ(tree(dir), tree(f.db));
+}
+
+// A build started by a brdfnav whose renderer made other images (another kRendererRevision) is
+// not resumed: its images would not mix with this renderer's.
+TEST(Database, ResumeRefusesTheWorkOfAnotherRendererRevision) {
+  const Fixture& f = fixture();
+  const fs::path dir = scratch("revision"), work = dir.string() + ".partial";
+  interrupt_after_the_first_image(dir);
+  const fs::path settings = work / "settings.yaml";
+  std::ifstream in(settings, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string current = "renderer_revision: " + std::to_string(kRendererRevision);
+  const std::size_t at = text.find(current);
+  ASSERT_NE(at, std::string::npos) << text;
+  text.replace(at, current.size(), "renderer_revision: " + std::to_string(kRendererRevision - 1));
+  std::ofstream(settings, std::ios::binary) << text;
+  PrecomputeRequest resume{tiny_profile(), dir, true, 0, {}};
+  try {
+    precompute_database(resume, f.env, f.scene);
+    ADD_FAILURE() << "resumed the work of another renderer";
+  } catch (const DatabaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("renderer revision"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir));
 }
 
 // The render phase writes a unit's images while the next one renders; an image's progress is

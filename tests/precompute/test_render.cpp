@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 #include <fstream>
+#include <iomanip>
 #include <optional>
 #include <utility>
 
@@ -328,6 +329,45 @@ TEST(Render, ASliverOverThePoleMatchesABruteForceIntegral) {
     const float* got = image.pixel(x, y);
     for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(got[ch], expected[ch], 0.01 * expected[ch]) << y;
   }
+}
+
+// Reference values of this renderer's images: the sums of the R, G and B channels of the diffuse
+// image and of every model's medium lobe at 12 x 12 under interior.exr. A change to the renderer
+// that moves them is a new revision: bump kRendererRevision (render.h) and update these, so that
+// no build mixes images of the two. The tolerance, 1e-6, lets through rounding alone (Ward's exps
+// differ by a few units in the last place between CPUs with and without AVX2, and each pixel is
+// rounded to float).
+TEST(Render, ImagesAreThoseOfThisRevision) {
+  ASSERT_EQ(kRendererRevision, 1) << "update the reference values below with the revision";
+  const Scene sphere = Scene::sphere();
+  Renderer renderer(interior(), sphere, 12);
+  auto sums = [](const Image& image) {
+    Rgb sum = Rgb::Zero();
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x)
+        if (image.covered(x, y))
+          for (int c = 0; c < 3; ++c) sum[c] += image.pixel(x, y)[c];
+    return sum;
+  };
+  struct Reference {
+    const char* name;
+    Rgb sum;
+  };
+  const std::vector<Reference> references{
+      {"diffuse", Rgb(160.3651665, 156.4967859, 166.836096)},
+      {"blinn_phong", Rgb(89.50168559, 84.42749129, 81.47878216)},
+      {"ward", Rgb(120.3055836, 110.3844757, 99.71557939)},
+      {"cook_torrance", Rgb(26.97227162, 24.41424952, 22.17552429)},
+      {"lafortune", Rgb(3.587669812, 2.733294372, 1.657726243)},
+      {"he", Rgb(19.55968145, 17.43431864, 14.8943063)}};
+  std::vector<Rgb> got{sums(renderer.diffuse())};
+  for (const AccuracySetting& s : accuracy_settings())
+    if (s.name == "medium") got.push_back(sums(renderer.specular(make_lobe(s.model, s.params))));
+  ASSERT_EQ(got.size(), references.size());
+  for (std::size_t k = 0; k < got.size(); ++k)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(got[k][c], references[k].sum[c], 1e-6 * references[k].sum[c])
+          << references[k].name << " channel " << c << ": " << std::setprecision(10) << got[k][c];
 }
 
 class Accuracy : public ::testing::TestWithParam<ModelId> {};
