@@ -201,16 +201,27 @@ TEST(Render, ConcaveMeshShadowsItself) {
   fs::remove(obj);
 }
 
+// The renderer's frame at the sphere's pixel (x, y) of a res x res image, and wo in it.
+struct SpherePixel {
+  Frame frame;
+  Vec3 wo;
+};
+SpherePixel sphere_pixel(int res, int x, int y) {
+  const double u = -1 + (x + 0.5) * 2 / res, v = 1 - (y + 0.5) * 2 / res;
+  const Vec3 normal(u, v, std::sqrt(1 - u * u - v * v));
+  const Frame frame = Frame::from_normal_tangent(normal, Vec3(0, 1, 0));
+  return {frame, frame.to_local(Vec3(0, 0, 1))};
+}
+
 // The specular value of the sphere's pixel (x, y) by brute force: a dense grid of nx x ny over the
 // half vector's slopes within 8 deviations (sx, sy) of the normal, each reflected into an
 // incident direction (d omega_i = 4 (wo . h) d omega_h) and lit by the texel it falls in. In
 // half-vector space a sharp lobe is round even where reflection squeezes it into a line.
 Rgb brute_force_pixel(const Lobe& lobe, int res, int x, int y, double sx, double sy, int nx = 1200,
                       int ny = 1200) {
-  const double u = -1 + (x + 0.5) * 2 / res, v = 1 - (y + 0.5) * 2 / res;
-  const Vec3 normal(u, v, std::sqrt(1 - u * u - v * v));
-  const Frame frame = Frame::from_normal_tangent(normal, Vec3(0, 1, 0));  // the renderer's frame
-  const Vec3 wo = frame.to_local(Vec3(0, 0, 1));
+  const SpherePixel pixel = sphere_pixel(res, x, y);
+  const Frame& frame = pixel.frame;
+  const Vec3& wo = pixel.wo;
   const EnvMap& env = interior();
   const double range_x = 8 * sx, range_y = 8 * sy;
   const double cell_x = 2 * range_x / nx, cell_y = 2 * range_y / ny;
@@ -235,10 +246,9 @@ Rgb brute_force_pixel(const Lobe& lobe, int res, int x, int y, double sx, double
 // K(texel centre), K = f cos for a lobe or cos / pi (Lambert, `lobe` empty): exact to second order
 // in the texel's size (0.006 rad on interior.exr), which broad kernels do not see.
 Rgb texel_sum_pixel(const std::optional<Lobe>& lobe, int res, int x, int y) {
-  const double u = -1 + (x + 0.5) * 2 / res, v = 1 - (y + 0.5) * 2 / res;
-  const Vec3 normal(u, v, std::sqrt(1 - u * u - v * v));
-  const Frame frame = Frame::from_normal_tangent(normal, Vec3(0, 1, 0));  // the renderer's frame
-  const Vec3 wo = frame.to_local(Vec3(0, 0, 1));
+  const SpherePixel pixel = sphere_pixel(res, x, y);
+  const Frame& frame = pixel.frame;
+  const Vec3& wo = pixel.wo;
   const EnvMap& env = interior();
   const int w = env.width(), h = env.height();
   Rgb sum = Rgb::Zero();
