@@ -6,9 +6,8 @@
 #include "web_assets.h"
 
 #include <httplib.h>
-#include <pthread.h>
+#include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -145,14 +144,29 @@ std::string url(const std::string& host, int port) {
   return "http://" + (ipv6 ? "[" + host + "]" : host) + ":" + std::to_string(port) + "/";
 }
 
+// The write end of the pipe that on_stop_signal() writes to, and the handler: write() is
+// async-signal-safe.
+int stop_pipe_write = -1;
+extern "C" void on_stop_signal(int) {
+  const char byte = 1;
+  [[maybe_unused]] const ssize_t written = ::write(stop_pipe_write, &byte, 1);
+}
+
 void serve(const ServeOptions& o) {
-  // Blocked before any thread starts, so that every thread inherits the mask and SIGINT and
-  // SIGTERM reach only the waiter below, which stops the server cleanly.
-  sigset_t stop_signals;
-  sigemptyset(&stop_signals);
-  sigaddset(&stop_signals, SIGINT);
-  sigaddset(&stop_signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  // SIGINT and SIGTERM stop the server cleanly whichever thread they reach: a handler, not a
+  // signal mask, since libraries start threads of their own before main() (OpenBLAS's pthreads
+  // build does), which no mask set here would cover. The handler writes to a pipe that the
+  // waiter below reads.
+  int stop_pipe[2];
+  if (::pipe(stop_pipe) != 0)
+    throw std::runtime_error(std::string("serve: pipe: ") + std::strerror(errno));
+  stop_pipe_write = stop_pipe[1];
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  action.sa_flags = SA_RESTART;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
 
   std::unique_ptr<const NavigatorApi> api;
   try {
@@ -172,16 +186,20 @@ void serve(const ServeOptions& o) {
               url(o.host, port).c_str());
   std::fflush(stdout);
 
-  std::atomic<bool> signalled = false;
   std::thread waiter([&] {
-    int signal = 0;
-    sigwait(&stop_signals, &signal);
-    signalled = true;
+    char byte = 0;
+    while (::read(stop_pipe[0], &byte, 1) < 0 && errno == EINTR) {
+    }
     server.stop();
   });
   const bool ok = server.listen_after_bind();
-  if (!signalled) pthread_kill(waiter.native_handle(), SIGTERM);  // wakes the waiter
+  const char wake = 0;  // the waiter, if no signal came
+  [[maybe_unused]] const ssize_t written = ::write(stop_pipe[1], &wake, 1);
   waiter.join();
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  ::close(stop_pipe[0]);
+  ::close(stop_pipe[1]);
   if (!ok) throw std::runtime_error("serve: the server stopped on an error");
   std::puts("brdfnav: stopped");
 }
