@@ -24,6 +24,9 @@ void report(benchmark::State& state, bool blas, double flops) {
       benchmark::Counter(flops, benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// One thread for OpenBLAS too, as pca.cpp runs it (its pthreads build would use every core).
+const bool kOneBlasThread = (openblas_set_num_threads(1), true);
+
 // Y += X W, one slab of rows (times_right() in pca.cpp).
 void BM_ProductRight(benchmark::State& state) {
   const bool blas = state.range(0) != 0;

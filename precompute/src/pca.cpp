@@ -27,10 +27,13 @@ std::size_t blocks(std::size_t n, std::size_t size) {
 
 // c = op(a) b + beta c, through OpenBLAS's sgemm: the products below are most of the embedding's
 // cost, and its kernels, chosen for the CPU at run time, ran 2.5 times as fast as Eigen's
-// (built for the baseline x86-64) on this machine (bench/RESULTS.md). OpenBLAS's serial build:
-// the threads are parallel_for's, each product inside one task.
+// (built for the baseline x86-64) on this machine (bench/RESULTS.md). The threads are
+// parallel_for's, each product inside one task: OpenBLAS runs each call on its caller's thread
+// (its pthreads build, which allows concurrent calls, with its own thread count set to 1).
 void gemm(bool transpose_a, const Eigen::Ref<const MatrixXf>& a,
           const Eigen::Ref<const MatrixXf>& b, float beta, Eigen::Ref<MatrixXf> c) {
+  static const bool single_threaded = (openblas_set_num_threads(1), true);
+  (void)single_threaded;
   const auto m = static_cast<int>(c.rows()), n = static_cast<int>(c.cols());
   const auto k = static_cast<int>(b.rows());
   if (m == 0 || n == 0) return;
