@@ -32,8 +32,7 @@ std::size_t blocks(std::size_t n, std::size_t size) {
 // (its pthreads build, which allows concurrent calls, with its own thread count set to 1).
 void gemm(bool transpose_a, const Eigen::Ref<const MatrixXf>& a,
           const Eigen::Ref<const MatrixXf>& b, float beta, Eigen::Ref<MatrixXf> c) {
-  static const bool single_threaded = (openblas_set_num_threads(1), true);
-  (void)single_threaded;
+  [[maybe_unused]] static const bool single_threaded = (openblas_set_num_threads(1), true);
   const auto m = static_cast<int>(c.rows()), n = static_cast<int>(c.cols());
   const auto k = static_cast<int>(b.rows());
   if (m == 0 || n == 0) return;
