@@ -40,7 +40,10 @@ EnvPyramid::EnvPyramid(const EnvMap& env) {
   build_texels(env);
   while (levels_.back().width > 2 || levels_.back().height > 1)
     levels_.push_back(half_of(levels_.back()));
-  for (Level& l : levels_) l.luminance = {};
+  for (Level& l : levels_) {
+    l.luminance = {};
+    weigh(l);
+  }
   hot_groups_.resize(levels_.size());
   for (int level = 1; level < level_count(); ++level) hot_groups_[level] = group_hot_texels(level);
 }
@@ -140,6 +143,26 @@ EnvPyramid::Level EnvPyramid::half_of(const Level& fine) const {
     }
   }
   return coarse;
+}
+
+// Neighbours along a row wrap around; the first and last rows have none beyond the pole.
+void EnvPyramid::weigh(Level& level) {
+  const int w = level.width, h = level.height;
+  auto power = [&](int x, int y) {
+    const float* d = &level.data[kStride * (static_cast<std::size_t>(y) * w + x)];
+    return Rgb(d[3], d[4], d[5]);
+  };
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const Rgb own = power(x, y);
+      Rgb differences = power(x > 0 ? x - 1 : w - 1, y) + power(x + 1 < w ? x + 1 : 0, y) - 2 * own;
+      if (y > 0) differences += power(x, y - 1) - own;
+      if (y + 1 < h) differences += power(x, y + 1) - own;
+      const Rgb weight = own + differences / 24;
+      float* d = &level.data[kStride * (static_cast<std::size_t>(y) * w + x)];
+      for (int c = 0; c < 3; ++c) d[6 + c] = static_cast<float>(weight[c]);
+    }
+  }
 }
 
 }  // namespace brdfnav

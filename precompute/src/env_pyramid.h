@@ -18,6 +18,11 @@ namespace brdfnav {
 struct EnvNode {
   Vec3 centroid;  // unit
   Rgb power;
+  // What the corrected midpoint rule weighs K(centroid) with: the power plus the second
+  // differences of the level's powers, power + sum over the neighbours of (theirs - power) / 24.
+  // Summed by parts, sum of weight * K equals the rule's sum of power * (K + its second
+  // differences / 24) (docs/RENDERER.md), without reading K at the neighbours.
+  Rgb weight;
 };
 
 class EnvPyramid {
@@ -32,7 +37,12 @@ class EnvPyramid {
   EnvNode node(int level, int x, int y) const {
     const Level& l = levels_[level];
     const float* d = &l.data[kStride * (static_cast<std::size_t>(y) * l.width + x)];
-    return {Vec3(d[0], d[1], d[2]), Rgb(d[3], d[4], d[5])};
+    return {Vec3(d[0], d[1], d[2]), Rgb(d[3], d[4], d[5]), Rgb(d[6], d[7], d[8])};
+  }
+  Rgb power(int level, int x, int y) const {
+    const Level& l = levels_[level];
+    const float* d = &l.data[kStride * (static_cast<std::size_t>(y) * l.width + x) + 3];
+    return Rgb(d[0], d[1], d[2]);
   }
   struct HotTexel {
     int x, y;      // level-0 coordinates
@@ -59,8 +69,8 @@ class EnvPyramid {
   }
 
  private:
-  // per node: centroid xyz, power rgb
-  static constexpr int kStride = 6;
+  // per node: centroid xyz, power rgb, weight rgb
+  static constexpr int kStride = 9;
   struct Level {
     int width = 0, height = 0;
     std::vector<float> data;
@@ -68,6 +78,7 @@ class EnvPyramid {
   };
   void build_texels(const EnvMap& env);
   Level half_of(const Level& fine) const;
+  static void weigh(Level& level);
   std::vector<HotGroup> group_hot_texels(int level) const;
 
   std::vector<HotTexel> hot_;

@@ -7,7 +7,8 @@
 // of `reach` deviations in the half vector's slopes (Ward), enumerated as row segments.
 // Luminance-weighted centroids make the midpoint rule exact to first order; the second order is
 // corrected with the grid's own second differences of K (the corrected midpoint rule,
-// + (K_left + K_right + K_up + K_down - 4 K) / 24 per node). The hot texels (lamps), which lobes
+// + (K_left + K_right + K_up + K_down - 4 K) / 24 per node), which summation by parts moves onto
+// the powers: each node's K is weighed by EnvNode::weight. The hot texels (lamps), which lobes
 // see far into their tails, are cut into pieces as fine as the lobe needs wherever it reaches
 // them. No randomness and a fixed order of summation: results are deterministic.
 #pragma once
@@ -32,41 +33,20 @@ struct AlwaysVisible {
 
 // Per-thread scratch space of the quadrature, reused from pixel to pixel.
 struct QuadratureScratch {
-  std::vector<RowSegment> segments;    // the window's nodes, row by row, left to right
-  std::vector<std::size_t> offsets;    // per segment: index of its first node below
-  std::vector<std::size_t> row_first;  // per row from the first segment's: its first segment
-  std::vector<double> grey;            // K per window node, for grey kernels
-  std::vector<Rgb> colour, power;      // K per window node for RGB kernels; power
-  std::vector<BatchValue> batch;       // K per window node for batches of lobes
-  std::vector<double> directions;      // window nodes' centroids, x then y then z, world and local
+  std::vector<RowSegment> segments;  // the window's nodes, row by row, left to right
+  // For kernels that evaluate a window's nodes at once (Ward's), a chunk of them at a time: per
+  // node K, weight and the centroid, x then y then z, world and local.
+  std::vector<double> kernel;
+  std::vector<Rgb> weight;
+  std::vector<double> directions;
   PolygonScratch polygon;
-
-  template <typename V>
-  std::vector<V>& kernel() {
-    return kernel_of<V>(*this);
-  }
-  template <typename V>
-  const std::vector<V>& kernel() const {
-    return kernel_of<V>(*this);
-  }
-
- private:
-  template <typename V, typename Self>
-  static auto& kernel_of(Self& self) {
-    if constexpr (std::is_same_v<V, double>)
-      return self.grey;
-    else if constexpr (std::is_same_v<V, Rgb>)
-      return self.colour;
-    else
-      return self.batch;
-  }
 };
 
 template <typename Kernel, typename Visible = AlwaysVisible>
 class Quadrature {
   using Value = typename Kernel::Value;
   using Sum = decltype(weighted(Rgb(), Value()));  // Rgb, or one Rgb per lobe of a batch
-  // Whether the kernel evaluates a window's nodes at once (slope_window_values()).
+  // Whether the kernel evaluates a window's nodes at once (slope_window_sum()).
   static constexpr bool kAtOnce = requires(const Kernel& k, const double* x, double* out) {
     k.values_local(x, 1, out);
   };
@@ -129,7 +109,6 @@ class Quadrature {
                         quality.max_split);
     };
     split_ = level_ > 0 ? 1 : pieces_for(step);
-    piece_share_ = 1.0 / (split_ * split_);
     const double hot_step = shape.node_width / quality.hot_texels_per_width;
     hot_split_ = pieces_for(hot_step);
     // Hot texels merge into nodes half the size of the pieces the lobe would cut them into: at
@@ -236,177 +215,139 @@ class Quadrature {
     return inside;
   }
 
-  // The piece of level-0 texel (tx, ty) at sines and cosines st, ct of its row's theta and sp,
-  // cp of its column's phi (split_ > 1): an equal share of the texel's power at its centre.
-  EnvNode piece(int tx, int ty, double st, double ct, double sp, double cp) const {
-    return {Vec3(-st * sp, ct, st * cp), env_.node(0, tx, ty).power * piece_share_};
-  }
+  // Pieces of the level-0 texels along one row of the grid (split_ > 1), texel by texel from
+  // (tx, ty), in the sub_y-th row of pieces of its texels: each an equal share of its texel's
+  // power, with the weight EnvNode has on the grid of pieces, where only the pieces on a
+  // texel's edge have neighbours of another power.
+  class PieceRow {
+   public:
+    PieceRow(const EnvPyramid& env, int tx, int ty, int sub_y, int split)
+        : env_(env), w_(env.width(0)), tx_(tx), ty_(ty), split_(split) {
+      vy_ = sub_y == 0 ? ty - 1 : sub_y == split - 1 ? ty + 1 : -1;
+      if (vy_ >= env.height(0)) vy_ = -1;
+      share_ = 1.0 / (split * split), edge_share_ = share_ / 24;
+      power_ = env.power(0, tx, ty);
+      right_ = env.power(0, tx + 1 < w_ ? tx + 1 : 0, ty);
+      weigh(env.power(0, tx > 0 ? tx - 1 : w_ - 1, ty));
+    }
+    Rgb power() const { return power_ * share_; }
+    // Piece `sub` (0 .. split - 1 from the left) of the current texel.
+    const Rgb& weight(int sub) const {
+      return sub == 0 ? left_weight_ : sub == split_ - 1 ? right_weight_ : centre_;
+    }
+    void next_texel() {
+      tx_ = tx_ + 1 == w_ ? 0 : tx_ + 1;
+      const Rgb left = power_;
+      power_ = right_;
+      right_ = env_.power(0, tx_ + 1 < w_ ? tx_ + 1 : 0, ty_);
+      weigh(left);
+    }
 
-  // Pass 1 evaluates K at every node of the window's rows; pass 2 sums power * K with the
-  // second-difference correction wherever a node has its four neighbours.
+   private:
+    // Scalar loops: Eigen left these small expressions as calls, a tenth of a Ward sliver's time.
+    void weigh(const Rgb& left) {
+      const Rgb up_or_down = vy_ >= 0 ? env_.power(0, tx_, vy_) : power_;
+      for (int c = 0; c < 3; ++c) {
+        const double p = power_[c], centre = p * share_ + (up_or_down[c] - p) * edge_share_;
+        centre_[c] = centre;
+        left_weight_[c] = centre + (left[c] - p) * edge_share_;
+        right_weight_[c] = centre + (right_[c] - p) * edge_share_;
+      }
+    }
+    const EnvPyramid& env_;
+    int w_, tx_, ty_, vy_, split_;
+    double share_, edge_share_;  // of a texel's power in each piece; that / 24
+    Rgb power_, right_, centre_, left_weight_, right_weight_;
+  };
+
+  // The corrected midpoint rule over the window: weight * K summed over its nodes (EnvNode).
   Sum window_sum(QuadratureScratch& s) const {
     const double margin = 1.5 * node_angle_;
     s.segments.clear();
     if (!ellipse_spans(margin, s) && !slope_spans(margin, s)) cap_spans(margin, s.segments);
-    if (s.segments.empty()) return zero<Sum>();  // a window between rows: no node at all
-    const int row_lo = s.segments.front().row, rows = s.segments.back().row - row_lo + 1;
-    s.row_first.resize(rows + 1);
-    for (std::size_t r = 0, g = 0; r <= static_cast<std::size_t>(rows); ++r) {
-      while (g < s.segments.size() && s.segments[g].row < row_lo + static_cast<int>(r)) ++g;
-      s.row_first[r] = g;
-    }
-    evaluate(s, margin);
-    return corrected_sum(s);
+    if constexpr (kAtOnce)
+      if (slopes_) return slope_window_sum(s, margin);
+    Sum sum = zero<Sum>();
+    for_each_node(s, [&](const EnvNode& n) {
+      Value k;
+      if (window_value(n.centroid, margin, k)) sum += weighted(n.weight, k);
+    });
+    return sum;
   }
 
-  // K and power at every node of the window's segments, both zero outside the window.
-  void evaluate(QuadratureScratch& s, double margin) const {
-    const std::size_t count = s.segments.size();
-    s.offsets.resize(count + 1);
-    s.offsets[0] = 0;
-    for (std::size_t g = 0; g < count; ++g)
-      s.offsets[g + 1] = s.offsets[g] + (s.segments[g].x1 - s.segments[g].x0 + 1);
-    const std::size_t total = s.offsets[count];
-    std::vector<Value>& kernel = s.kernel<Value>();
-    kernel.resize(total);
-    s.power.resize(total);
-    const bool at_once = kAtOnce && slopes_;
-    if (at_once) s.directions.resize(6 * total);
+  // visit(node) for every node of the window's segments, row by row, left to right.
+  template <typename Visit>
+  void for_each_node(const QuadratureScratch& s, Visit&& visit) const {
     // Pieces step along a row by the angle `turn` in phi: their sine and cosine follow by that
     // rotation rather than by a sincos per piece (a fifth of the time of a narrow anisotropic
     // Ward lobe); the rounding drifts by a few 1e-12 at most over a row of 16384 pieces.
     const double turn = 2 * kPi / grid_w_, sin_turn = std::sin(turn), cos_turn = std::cos(turn);
-    for (std::size_t g = 0; g < count; ++g) {
-      const auto [y, x0, x1] = s.segments[g];
+    for (const auto& [y, x0, x1] : s.segments) {
+      const int first = wrap(x0);
+      if (split_ == 1) {
+        for (int xs = x0, x = first; xs <= x1; ++xs, x = x + 1 == grid_w_ ? 0 : x + 1)
+          visit(env_.node(level_, x, y));
+        continue;
+      }
       const double theta = (y + 0.5) * node_angle_;
       const double st = std::sin(theta), ct = std::cos(theta);
-      const int first = wrap(x0);
       const double phi = 2 * kPi * ((first + 0.5) / grid_w_ - 0.5);
       double sp = std::sin(phi), cp = std::cos(phi);
-      // The texel of piece x is (tx, ty), x = tx * split_ + sub: counted, not divided, along.
-      const int ty = y / split_;
-      int tx = first / split_, sub = first % split_;
-      std::size_t i = s.offsets[g];
-      for (int xs = x0, x = first; xs <= x1; ++xs, ++i, x = x + 1 == grid_w_ ? 0 : x + 1) {
-        EnvNode n;
-        if (split_ == 1) {
-          n = env_.node(level_, x, y);
-        } else {  // the piece, then on to the next one's angle and texel
-          n = piece(tx, ty, st, ct, sp, cp);
-          const double next_sp = sp * cos_turn + cp * sin_turn;
-          cp = cp * cos_turn - sp * sin_turn, sp = next_sp;
-          if (++sub == split_) sub = 0, tx = tx + 1 == env_.width(0) ? 0 : tx + 1;
-        }
-        if (at_once) {
-          for (int c = 0; c < 3; ++c) s.directions[c * total + i] = n.centroid[c];
-          s.power[i] = n.power;
-        } else {
-          s.power[i] = window_value(n.centroid, margin, kernel[i]) ? n.power : Rgb::Zero();
-        }
+      // The texel of piece x is (tx, y / split_), x = tx * split_ + sub: counted, not divided.
+      int sub = first % split_;
+      PieceRow texels(env_, first / split_, y / split_, y % split_, split_);
+      for (int xs = x0; xs <= x1; ++xs) {
+        visit(EnvNode{Vec3(-st * sp, ct, st * cp), texels.power(), texels.weight(sub)});
+        // On to the next piece's angle and texel.
+        const double next_sp = sp * cos_turn + cp * sin_turn;
+        cp = cp * cos_turn - sp * sin_turn, sp = next_sp;
+        if (++sub == split_) sub = 0, texels.next_texel();
       }
     }
-    if constexpr (kAtOnce)
-      if (at_once) slope_window_values(s, margin);
   }
 
-  // window_value() at every node of a slope window at once, for kernels that take arrays of
-  // directions (Ward's): array expressions, and the exponentials four at a time (vector_exp.h).
-  void slope_window_values(QuadratureScratch& s, double margin) const {
+  // window_sum() for kernels that take arrays of directions (Ward's): K at the nodes of a slope
+  // window kChunk at a time, by array expressions and the exponentials four at a time
+  // (vector_exp.h). A sliver's window has up to max_nodes nodes, whose arrays at once would not
+  // stay in the cache.
+  static constexpr Eigen::Index kChunk = 256;
+  Sum slope_window_sum(QuadratureScratch& s, double margin) const {
     static_assert(std::is_same_v<Value, double>, "K of the nodes at once is grey");
-    const auto n = static_cast<Eigen::Index>(s.power.size());
-    double* world = s.directions.data();
-    double* local = world + 3 * n;
+    s.directions.resize(6 * kChunk);
+    s.weight.resize(kChunk);
+    s.kernel.resize(kChunk);
+    Sum sum = zero<Sum>();
+    Eigen::Index n = 0;
+    for_each_node(s, [&](const EnvNode& node) {
+      for (int c = 0; c < 3; ++c) s.directions[c * kChunk + n] = node.centroid[c];
+      s.weight[n] = node.weight;
+      if (++n == kChunk) add_chunk(s, n, margin, sum), n = 0;
+    });
+    add_chunk(s, n, margin, sum);
+    return sum;
+  }
+
+  // Adds weight * K of the first n nodes in the scratch's arrays to `sum`, in their order.
+  void add_chunk(QuadratureScratch& s, Eigen::Index n, double margin, Sum& sum) const {
     using Column = Eigen::Map<Eigen::ArrayXd>;
-    const Column x(world, n), y(world + n, n), z(world + 2 * n, n);
-    const Frame& f = slopes_->frame;  // to_local(), column by column
-    for (const Vec3* axis : {&f.x, &f.y, &f.z}) {
-      Column(local, n) = axis->x() * x + axis->y() * y + axis->z() * z;
-      local += n;
+    double* world = s.directions.data();
+    const Column x(world, n), y(world + kChunk, n), z(world + 2 * kChunk, n);
+    double* local = world + 3 * kChunk;  // x[0..n), y = x + n, z = x + 2n: values_local()'s
+    const Frame& f = slopes_->frame;     // to_local(), column by column
+    for (int c = 0; c < 3; ++c) {
+      const Vec3& axis = c == 0 ? f.x : c == 1 ? f.y : f.z;
+      Column(local + c * n, n) = axis.x() * x + axis.y() * y + axis.z() * z;
     }
-    local -= 3 * n;
-    double* k = s.grey.data();
+    double* k = s.kernel.data();
     kernel_.values_local(local, n, k);
     const double radius = reach_ + margin * inv_minor_;
+    Sum total = sum;  // in registers: `sum` may alias the arrays as far as the compiler knows
     for (Eigen::Index i = 0; i < n; ++i) {
       const Vec3 w(local[i], local[n + i], local[2 * n + i]);
-      if (!within_local_slopes(w, radius))
-        k[i] = 0, s.power[i] = Rgb::Zero();
-      else if (!positive(k[i]) || !visible_(Vec3(x[i], y[i], z[i])))
-        k[i] = 0;
+      if (within_local_slopes(w, radius) && positive(k[i]) && visible_(Vec3(x[i], y[i], z[i])))
+        total += weighted(s.weight[i], k[i]);
     }
-  }
-
-  // The K values of one window row met column by column along another row's segment: null
-  // outside the row's segments (a row of the whole grid wraps around) or when there is no row.
-  class RowCursor {
-   public:
-    RowCursor() = default;
-    RowCursor(const QuadratureScratch& s, std::size_t begin, std::size_t end, int grid_w)
-        : s_(&s), g_(begin), end_(end), grid_w_(grid_w) {
-      if (g_ < end_) load();
-    }
-    // To column xs, at or after the previous seek's.
-    void seek(int xs) {
-      while (g_ + 1 < end_ && s_->segments[g_].x1 < xs) ++g_, load();
-      if (g_ < end_) i_ = full_ ? ((xs - x0_) % n_ + n_) % n_ : xs - x0_;
-    }
-    const Value* get() const { return i_ >= 0 && i_ < n_ ? k_ + i_ : nullptr; }
-    void next() {
-      if (++i_ < n_) return;
-      if (full_) {
-        i_ = 0;
-      } else if (g_ + 1 < end_) {  // on to the next segment, column x0_ + n_
-        const int xs = x0_ + n_;
-        ++g_, load();
-        i_ = xs - x0_;
-      }
-    }
-
-   private:
-    void load() {
-      const RowSegment& seg = s_->segments[g_];
-      x0_ = seg.x0, n_ = seg.x1 - seg.x0 + 1;
-      full_ = n_ >= grid_w_;  // then the row's only segment
-      k_ = &s_->kernel<Value>()[s_->offsets[g_]];
-    }
-    const QuadratureScratch* s_ = nullptr;
-    std::size_t g_ = 0, end_ = 0;
-    int grid_w_ = 0, x0_ = 0, n_ = 0, i_ = 0;
-    bool full_ = false;
-    const Value* k_ = nullptr;
-  };
-
-  RowCursor row_cursor(const QuadratureScratch& s, int r) const {
-    if (r < 0 || r + 1 >= static_cast<int>(s.row_first.size())) return {};
-    return {s, s.row_first[r], s.row_first[r + 1], grid_w_};
-  }
-
-  Sum corrected_sum(QuadratureScratch& s) const {
-    Sum sum = zero<Sum>();
-    const std::vector<Value>& kernel = s.kernel<Value>();
-    for (int r = 0; r + 1 < static_cast<int>(s.row_first.size()); ++r) {
-      RowCursor up = row_cursor(s, r - 1), down = row_cursor(s, r + 1);
-      for (std::size_t g = s.row_first[r]; g < s.row_first[r + 1]; ++g) {
-        const auto [y, x0, x1] = s.segments[g];
-        const int n = x1 - x0 + 1;
-        const bool full = n >= grid_w_;
-        const Value* k = &kernel[s.offsets[g]];
-        const Rgb* power = &s.power[s.offsets[g]];
-        up.seek(x0), down.seek(x0);
-        for (int j = 0; j < n; ++j, up.next(), down.next()) {
-          if (!positive(power[j])) continue;
-          Value v = k[j];
-          const Value *u = up.get(), *d = down.get();
-          if (u && d && (full || (j > 0 && j + 1 < n))) {
-            const Value& left = k[j > 0 ? j - 1 : n - 1];
-            const Value& right = k[j + 1 < n ? j + 1 : 0];
-            v = max0(Value(v + (*u + *d + left + right - 4 * v) / 24));
-          }
-          sum += weighted(power[j], v);
-        }
-      }
-    }
-    return sum;
+    sum = total;
   }
 
   int wrap(int xs) const {
@@ -608,8 +549,7 @@ class Quadrature {
   double extent_;                   // largest angle between the peak and the window's edge
   double major_width_, minor_width_, inv_major_, inv_minor_, reach_, node_angle_;
   int level_, split_, hot_split_, grid_w_, grid_h_;
-  int hot_level_;       // hot texels merged by the nodes of this level (0: one by one)
-  double piece_share_;  // 1 / split_^2: the share of a texel's power in each of its pieces
+  int hot_level_;  // hot texels merged by the nodes of this level (0: one by one)
   Visible visible_;
 };
 

@@ -1,6 +1,7 @@
 // The environment pyramid's hot texels merged by the nodes of each level
 // (precompute/src/env_pyramid.h): every hot texel in one group, the power kept, each group's
-// radius around its members, and the level chosen for a node size.
+// radius around its members, and the level chosen for a node size; the nodes' weights, the
+// corrected midpoint rule summed by parts.
 #include "env_pyramid.h"
 
 #include <gtest/gtest.h>
@@ -73,6 +74,31 @@ TEST(EnvPyramid, CoarsestLevelIsTheLargestNodeWithinTheStep) {
     EXPECT_EQ(pyramid.coarsest_level(0.99 * pyramid.node_angle(level + 1)), level);
   }
   EXPECT_EQ(pyramid.coarsest_level(100), pyramid.level_count() - 1);
+}
+
+// Summed over a whole level, weight * K is the corrected midpoint rule's power * (K + its second
+// differences / 24), the rows wrapping around and the first and last rows without neighbours
+// beyond the pole, for any K: here one that varies from node to node with no pattern.
+TEST(EnvPyramid, WeightsAreTheCorrectedMidpointRuleSummedByParts) {
+  const EnvPyramid pyramid(map_with_lamps());
+  for (int level = 0; level < pyramid.level_count(); ++level) {
+    const int w = pyramid.width(level), h = pyramid.height(level);
+    auto k = [&](int x, int y) { return 1.5 + std::sin(0.7 * x + 1.3 * y * y); };
+    Rgb rule = Rgb::Zero(), weighed = Rgb::Zero();
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const EnvNode n = pyramid.node(level, x, y);
+        double differences =
+            k(x > 0 ? x - 1 : w - 1, y) + k(x + 1 < w ? x + 1 : 0, y) - 2 * k(x, y);
+        if (y > 0) differences += k(x, y - 1) - k(x, y);
+        if (y + 1 < h) differences += k(x, y + 1) - k(x, y);
+        rule += n.power * (k(x, y) + differences / 24);
+        weighed += n.weight * k(x, y);
+      }
+    }
+    // The weights are stored as floats, like the powers.
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(weighed[c], rule[c], 1e-6 * rule[c]) << level;
+  }
 }
 
 }  // namespace
