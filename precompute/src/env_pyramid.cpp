@@ -90,23 +90,27 @@ void EnvPyramid::build_texels(const EnvMap& env) {
   });
   if (hot_.size() > kMaxHot) hot_.resize(kMaxHot);
 
-  Level texels{w, h, std::vector<float>(kStride * static_cast<std::size_t>(w) * h),
-               std::vector<double>(static_cast<std::size_t>(w) * h)};
+  const std::size_t count = static_cast<std::size_t>(w) * h;
+  Level texels{w,
+               h,
+               std::vector<float>(3 * count),
+               std::vector<float>(3 * count),
+               std::vector<float>(3 * count),
+               std::vector<double>(count)};
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const LatLongRect rect = lat_long_rect(x, x + 1, y, y + 1, w, h);
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      const std::size_t i = texels.index(x, y);
       const Rgb power = env.texel(x, y) * rect.solid_angle;
-      float* d = &texels.data[kStride * i];
-      for (int c = 0; c < 3; ++c) d[c] = static_cast<float>(rect.centroid[c]);
-      for (int c = 0; c < 3; ++c) d[3 + c] = static_cast<float>(power[c]);
-      texels.luminance[i] = luminance(power);
+      for (int c = 0; c < 3; ++c) texels.centroid[i + c] = static_cast<float>(rect.centroid[c]);
+      for (int c = 0; c < 3; ++c) texels.power[i + c] = static_cast<float>(power[c]);
+      texels.luminance[i / 3] = luminance(power);
     }
   }
   for (const HotTexel& t : hot_) {
-    const std::size_t i = static_cast<std::size_t>(t.y) * w + t.x;
-    for (int c = 0; c < 3; ++c) texels.data[kStride * i + 3 + c] = 0.f;
-    texels.luminance[i] = 0;
+    const std::size_t i = texels.index(t.x, t.y);
+    for (int c = 0; c < 3; ++c) texels.power[i + c] = 0.f;
+    texels.luminance[i / 3] = 0;
   }
   levels_.push_back(std::move(texels));
 }
@@ -114,9 +118,11 @@ void EnvPyramid::build_texels(const EnvMap& env) {
 // A parent's power is its children's sum; its centroid their luminance-weighted mean direction
 // (the solid-angle weighted one where they are black, so that it stays inside the node).
 EnvPyramid::Level EnvPyramid::half_of(const Level& fine) const {
-  Level coarse{(fine.width + 1) / 2, (fine.height + 1) / 2, {}, {}};
+  Level coarse{(fine.width + 1) / 2, (fine.height + 1) / 2, {}, {}, {}, {}};
   const std::size_t count = static_cast<std::size_t>(coarse.width) * coarse.height;
-  coarse.data.assign(kStride * count, 0.f);
+  coarse.centroid.assign(3 * count, 0.f);
+  coarse.power.assign(3 * count, 0.f);
+  coarse.weight.assign(3 * count, 0.f);
   coarse.luminance.assign(count, 0.0);
   for (int y = 0; y < coarse.height; ++y) {
     for (int x = 0; x < coarse.width; ++x) {
@@ -125,21 +131,19 @@ EnvPyramid::Level EnvPyramid::half_of(const Level& fine) const {
       double lum = 0;
       for (int fy = 2 * y; fy < std::min(2 * y + 2, fine.height); ++fy) {
         for (int fx = 2 * x; fx < std::min(2 * x + 2, fine.width); ++fx) {
-          const std::size_t j = static_cast<std::size_t>(fy) * fine.width + fx;
-          const float* d = &fine.data[kStride * j];
-          const Vec3 c(d[0], d[1], d[2]);
-          lit += fine.luminance[j] * c;
+          const std::size_t j = fine.index(fx, fy);
+          const Vec3 c(fine.centroid[j], fine.centroid[j + 1], fine.centroid[j + 2]);
+          lit += fine.luminance[j / 3] * c;
           plain += c;
-          power += Rgb(d[3], d[4], d[5]);
-          lum += fine.luminance[j];
+          power += rgb(fine.power, j);
+          lum += fine.luminance[j / 3];
         }
       }
-      const std::size_t i = static_cast<std::size_t>(y) * coarse.width + x;
+      const std::size_t i = coarse.index(x, y);
       const Vec3 centroid = (lum > 0 && lit.squaredNorm() > 0 ? lit : plain).normalized();
-      float* out = &coarse.data[kStride * i];
-      for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(centroid[c]);
-      for (int c = 0; c < 3; ++c) out[3 + c] = static_cast<float>(power[c]);
-      coarse.luminance[i] = lum;
+      for (int c = 0; c < 3; ++c) coarse.centroid[i + c] = static_cast<float>(centroid[c]);
+      for (int c = 0; c < 3; ++c) coarse.power[i + c] = static_cast<float>(power[c]);
+      coarse.luminance[i / 3] = lum;
     }
   }
   return coarse;
@@ -148,10 +152,7 @@ EnvPyramid::Level EnvPyramid::half_of(const Level& fine) const {
 // Neighbours along a row wrap around; the first and last rows have none beyond the pole.
 void EnvPyramid::weigh(Level& level) {
   const int w = level.width, h = level.height;
-  auto power = [&](int x, int y) {
-    const float* d = &level.data[kStride * (static_cast<std::size_t>(y) * w + x)];
-    return Rgb(d[3], d[4], d[5]);
-  };
+  auto power = [&](int x, int y) { return rgb(level.power, level.index(x, y)); };
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const Rgb own = power(x, y);
@@ -159,8 +160,8 @@ void EnvPyramid::weigh(Level& level) {
       if (y > 0) differences += power(x, y - 1) - own;
       if (y + 1 < h) differences += power(x, y + 1) - own;
       const Rgb weight = own + differences / 24;
-      float* d = &level.data[kStride * (static_cast<std::size_t>(y) * w + x)];
-      for (int c = 0; c < 3; ++c) d[6 + c] = static_cast<float>(weight[c]);
+      const std::size_t i = level.index(x, y);
+      for (int c = 0; c < 3; ++c) level.weight[i + c] = static_cast<float>(weight[c]);
     }
   }
 }

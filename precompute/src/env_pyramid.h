@@ -36,13 +36,13 @@ class EnvPyramid {
   double node_angle(int level) const { return kPi / levels_[level].height; }
   EnvNode node(int level, int x, int y) const {
     const Level& l = levels_[level];
-    const float* d = &l.data[kStride * (static_cast<std::size_t>(y) * l.width + x)];
-    return {Vec3(d[0], d[1], d[2]), Rgb(d[3], d[4], d[5]), Rgb(d[6], d[7], d[8])};
+    const std::size_t i = l.index(x, y);
+    return {Vec3(l.centroid[i], l.centroid[i + 1], l.centroid[i + 2]), rgb(l.power, i),
+            rgb(l.weight, i)};
   }
   Rgb power(int level, int x, int y) const {
     const Level& l = levels_[level];
-    const float* d = &l.data[kStride * (static_cast<std::size_t>(y) * l.width + x) + 3];
-    return Rgb(d[0], d[1], d[2]);
+    return rgb(l.power, l.index(x, y));
   }
   struct HotTexel {
     int x, y;      // level-0 coordinates
@@ -69,13 +69,16 @@ class EnvPyramid {
   }
 
  private:
-  // per node: centroid xyz, power rgb, weight rgb
-  static constexpr int kStride = 9;
+  // Per node three floats in each array: the pieces of split texels read the power alone.
   struct Level {
     int width = 0, height = 0;
-    std::vector<float> data;
+    std::vector<float> centroid, power, weight;
     std::vector<double> luminance;  // of the node's power, while building
+    std::size_t index(int x, int y) const { return 3 * (static_cast<std::size_t>(y) * width + x); }
   };
+  static Rgb rgb(const std::vector<float>& values, std::size_t i) {
+    return Rgb(values[i], values[i + 1], values[i + 2]);
+  }
   void build_texels(const EnvMap& env);
   Level half_of(const Level& fine) const;
   static void weigh(Level& level);
