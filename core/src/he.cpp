@@ -142,9 +142,7 @@ Rgb series_sum(const Rgb& g, const Rgb& t) {
 }
 
 Rgb tabulated_series_sum(const Rgb& g, const Rgb& t) {
-  Rgb out;
-  for (int c = 0; c < 3; ++c) out[c] = tabulated_series_sum(g[c], std::log(g[c]), t[c]);
-  return out;
+  return tabulated_series_sums(g, g.log(), t);
 }
 
 Rgb rough_limit_sum(const Rgb& g, const Rgb& t) {
@@ -152,12 +150,22 @@ Rgb rough_limit_sum(const Rgb& g, const Rgb& t) {
 }
 
 namespace {
-// One channel of distribution_sum(), with log_g = ln(g).
-double channel_distribution_sum(double g, double log_g, double t) {
-  const double w = smoothstep((g - kBlendLo) / (kBlendHi - kBlendLo));
-  const double series = w < 1 ? tabulated_series_sum(g, log_g, t) : 0.0;
-  const double limit = w > 0 ? std::exp(-t / g) / g : 0.0;
-  return (1.0 - w) * series + w * limit;
+// distribution_sum() with log_g = ln(g).
+Rgb blended_sum(const Rgb& g, const Rgb& log_g, const Rgb& t) {
+  Rgb w;
+  for (int c = 0; c < 3; ++c) w[c] = smoothstep((g[c] - kBlendLo) / (kBlendHi - kBlendLo));
+  // The three channels' series at once where all need it (most of the smooth lobes' nodes).
+  const bool all_series = (w < 1).all();
+  const Rgb series = all_series ? tabulated_series_sums(g, log_g, t) : Rgb::Zero();
+  Rgb out;
+  for (int c = 0; c < 3; ++c) {
+    const double s = all_series ? series[c]
+                     : w[c] < 1 ? tabulated_series_sum(g[c], log_g[c], t[c])
+                                : 0.0;
+    const double limit = w[c] > 0 ? std::exp(-t[c] / g[c]) / g[c] : 0.0;
+    out[c] = (1.0 - w[c]) * s + w[c] * limit;
+  }
+  return out;
 }
 
 // distribution_sum() of g = g_scale / lambda^2 and t = t_scale / lambda^2 per channel, with one
@@ -169,19 +177,12 @@ Rgb distribution_sum_per_wavelength(double g_scale, double t_scale) {
   // three (the rough and medium lobes, most of the time).
   static_assert(He::kLambda[0] > He::kLambda[1] && He::kLambda[1] > He::kLambda[2]);
   if (g_scale * k[0] >= kBlendHi) return std::exp(-t_scale / g_scale) / g_scale * lambda_squared();
-  const Rgb& log_k = log_inv_lambda_squared();
-  const double log_g_scale = std::log(g_scale);
-  Rgb out;
-  for (int c = 0; c < 3; ++c)
-    out[c] = channel_distribution_sum(g_scale * k[c], log_g_scale + log_k[c], t_scale * k[c]);
-  return out;
+  return blended_sum(g_scale * k, std::log(g_scale) + log_inv_lambda_squared(), t_scale * k);
 }
 }  // namespace
 
 Rgb distribution_sum(const Rgb& g, const Rgb& t) {
-  Rgb out;
-  for (int c = 0; c < 3; ++c) out[c] = channel_distribution_sum(g[c], std::log(g[c]), t[c]);
-  return out;
+  return blended_sum(g, g.log(), t);
 }
 
 }  // namespace he_detail

@@ -1,5 +1,7 @@
 #include "vector_exp.h"
 
+#include <brdfnav/core/cpu.h>
+
 #include <immintrin.h>
 
 #include <cmath>
@@ -18,15 +20,10 @@ __attribute__((target("avx2,fma"))) void exp_avx2(double* v, Eigen::Index n) {
   for (; i < n; ++i) v[i] = std::exp(v[i]);
 }
 
-bool has_avx2() {
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-}
-
 }  // namespace
 
 void exp_in_place(Eigen::Ref<Eigen::ArrayXd> values) {
-  static const bool avx2 = has_avx2();
+  static const bool avx2 = cpu_has_avx2_fma();
   if (avx2) return exp_avx2(values.data(), values.size());
   for (double& v : values) v = std::exp(v);
 }
