@@ -230,7 +230,6 @@ class Quadrature {
       right_ = env.power(0, tx + 1 < w_ ? tx + 1 : 0, ty);
       weigh(env.power(0, tx > 0 ? tx - 1 : w_ - 1, ty));
     }
-    Rgb power() const { return power_ * share_; }
     // Piece `sub` (0 .. split - 1 from the left) of the current texel.
     const Rgb& weight(int sub) const {
       return sub == 0 ? left_weight_ : sub == split_ - 1 ? right_weight_ : centre_;
@@ -268,14 +267,14 @@ class Quadrature {
     if constexpr (kAtOnce)
       if (slopes_) return slope_window_sum(s, margin);
     Sum sum = zero<Sum>();
-    for_each_node(s, [&](const EnvNode& n) {
+    for_each_node(s, [&](const Vec3& centroid, const Rgb& weight) {
       Value k;
-      if (window_value(n.centroid, margin, k)) sum += weighted(n.weight, k);
+      if (window_value(centroid, margin, k)) sum += weighted(weight, k);
     });
     return sum;
   }
 
-  // visit(node) for every node of the window's segments, row by row, left to right.
+  // visit(centroid, weight) for every node of the window's segments, row by row, left to right.
   template <typename Visit>
   void for_each_node(const QuadratureScratch& s, Visit&& visit) const {
     // Pieces step along a row by the angle `turn` in phi: their sine and cosine follow by that
@@ -285,8 +284,10 @@ class Quadrature {
     for (const auto& [y, x0, x1] : s.segments) {
       const int first = wrap(x0);
       if (split_ == 1) {
-        for (int xs = x0, x = first; xs <= x1; ++xs, x = x + 1 == grid_w_ ? 0 : x + 1)
-          visit(env_.node(level_, x, y));
+        for (int xs = x0, x = first; xs <= x1; ++xs, x = x + 1 == grid_w_ ? 0 : x + 1) {
+          const EnvNode n = env_.node(level_, x, y);
+          visit(n.centroid, n.weight);
+        }
         continue;
       }
       const double theta = (y + 0.5) * node_angle_;
@@ -297,7 +298,7 @@ class Quadrature {
       int sub = first % split_;
       PieceRow texels(env_, first / split_, y / split_, y % split_, split_);
       for (int xs = x0; xs <= x1; ++xs) {
-        visit(EnvNode{Vec3(-st * sp, ct, st * cp), texels.power(), texels.weight(sub)});
+        visit(Vec3(-st * sp, ct, st * cp), texels.weight(sub));
         // On to the next piece's angle and texel.
         const double next_sp = sp * cos_turn + cp * sin_turn;
         cp = cp * cos_turn - sp * sin_turn, sp = next_sp;
@@ -318,9 +319,9 @@ class Quadrature {
     s.kernel.resize(kChunk);
     Sum sum = zero<Sum>();
     Eigen::Index n = 0;
-    for_each_node(s, [&](const EnvNode& node) {
-      for (int c = 0; c < 3; ++c) s.directions[c * kChunk + n] = node.centroid[c];
-      s.weight[n] = node.weight;
+    for_each_node(s, [&](const Vec3& centroid, const Rgb& weight) {
+      for (int c = 0; c < 3; ++c) s.directions[c * kChunk + n] = centroid[c];
+      s.weight[n] = weight;
       if (++n == kChunk) add_chunk(s, n, margin, sum), n = 0;
     });
     add_chunk(s, n, margin, sum);
