@@ -159,7 +159,7 @@ void EnvPyramid::weigh(Level& level) {
       Rgb differences = power(x > 0 ? x - 1 : w - 1, y) + power(x + 1 < w ? x + 1 : 0, y) - 2 * own;
       if (y > 0) differences += power(x, y - 1) - own;
       if (y + 1 < h) differences += power(x, y + 1) - own;
-      const Rgb weight = own + differences / 24;
+      const Rgb weight = own + differences * kSecondDifferenceFactor;
       const std::size_t i = level.index(x, y);
       for (int c = 0; c < 3; ++c) level.weight[i + c] = static_cast<float>(weight[c]);
     }

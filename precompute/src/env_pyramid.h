@@ -15,6 +15,10 @@
 
 namespace brdfnav {
 
+// The corrected midpoint rule's factor of the second differences: the error of the midpoint rule
+// over a cell is its second derivatives times the cell's size squared over 24.
+inline constexpr double kSecondDifferenceFactor = 1.0 / 24;
+
 struct EnvNode {
   Vec3 centroid;  // unit
   Rgb power;

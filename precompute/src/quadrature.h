@@ -225,7 +225,7 @@ class Quadrature {
         : env_(env), w_(env.width(0)), tx_(tx), ty_(ty), split_(split) {
       vy_ = sub_y == 0 ? ty - 1 : sub_y == split - 1 ? ty + 1 : -1;
       if (vy_ >= env.height(0)) vy_ = -1;
-      share_ = 1.0 / (split * split), edge_share_ = share_ / 24;
+      share_ = 1.0 / (split * split), edge_share_ = share_ * kSecondDifferenceFactor;
       power_ = env.power(0, tx, ty);
       right_ = env.power(0, tx + 1 < w_ ? tx + 1 : 0, ty);
       weigh(env.power(0, tx > 0 ? tx - 1 : w_ - 1, ty));
@@ -255,7 +255,7 @@ class Quadrature {
     }
     const EnvPyramid& env_;
     int w_, tx_, ty_, vy_, split_;
-    double share_, edge_share_;  // of a texel's power in each piece; that / 24
+    double share_, edge_share_;  // of a texel's power in each piece; that / 24 (the rule's)
     Rgb power_, right_, centre_, left_weight_, right_weight_;
   };
 
