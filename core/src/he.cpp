@@ -155,15 +155,17 @@ Rgb blended_sum(const Rgb& g, const Rgb& log_g, const Rgb& t) {
   Rgb w;
   for (int c = 0; c < 3; ++c) w[c] = smoothstep((g[c] - kBlendLo) / (kBlendHi - kBlendLo));
   // The three channels' series at once where all need it (most of the smooth lobes' nodes).
-  const bool all_series = (w < 1).all();
-  const Rgb series = all_series ? tabulated_series_sums(g, log_g, t) : Rgb::Zero();
+  Rgb series = Rgb::Zero();
+  if ((w < 1).all()) {
+    series = tabulated_series_sums(g, log_g, t);
+  } else {
+    for (int c = 0; c < 3; ++c)
+      if (w[c] < 1) series[c] = tabulated_series_sum(g[c], log_g[c], t[c]);
+  }
   Rgb out;
   for (int c = 0; c < 3; ++c) {
-    const double s = all_series ? series[c]
-                     : w[c] < 1 ? tabulated_series_sum(g[c], log_g[c], t[c])
-                                : 0.0;
     const double limit = w[c] > 0 ? std::exp(-t[c] / g[c]) / g[c] : 0.0;
-    out[c] = (1.0 - w[c]) * s + w[c] * limit;
+    out[c] = (1.0 - w[c]) * series[c] + w[c] * limit;
   }
   return out;
 }
