@@ -8,24 +8,32 @@ namespace brdfnav {
 
 namespace {
 
-// Sorts `v` by row, then by first column: by counting the rows (a window's pieces are many over
-// few rows, and a comparison sort of them was a tenth of a sliver's time), then a sort within
-// each row. Pieces of a row with the same x0 may come in any order: merge_rows() then keeps the
-// largest x1 whatever the order.
-void sort_rows(std::vector<RowSegment>& v, PolygonScratch& s) {
+// Sorts `v` by row_of(element), then by `less` within each row, through `sorted`: by counting
+// the rows (a window's pieces and crossings are many over few rows, and a comparison sort of them
+// was a tenth of a sliver's time), then a sort within each row.
+template <typename T, typename RowOf, typename Less>
+void sort_rows(std::vector<T>& v, std::vector<T>& sorted, std::vector<int>& row_ends,
+               RowOf&& row_of, Less&& less) {
   if (v.empty()) return;
   const auto [lo, hi] = std::minmax_element(
-      v.begin(), v.end(), [](const RowSegment& a, const RowSegment& b) { return a.row < b.row; });
-  const int first = lo->row, rows = hi->row - first + 1;
-  s.row_ends.assign(rows + 1, 0);
-  for (const RowSegment& seg : v) ++s.row_ends[seg.row - first + 1];
-  for (int r = 0; r < rows; ++r) s.row_ends[r + 1] += s.row_ends[r];  // now where each row starts
-  s.sorted.resize(v.size());
-  for (const RowSegment& seg : v) s.sorted[s.row_ends[seg.row - first]++] = seg;  // ... ends
-  for (int r = 0, begin = 0; r < rows; begin = s.row_ends[r++])
-    std::sort(s.sorted.begin() + begin, s.sorted.begin() + s.row_ends[r],
-              [](const RowSegment& a, const RowSegment& b) { return a.x0 < b.x0; });
-  v.swap(s.sorted);
+      v.begin(), v.end(), [&](const T& a, const T& b) { return row_of(a) < row_of(b); });
+  const int first = row_of(*lo), rows = row_of(*hi) - first + 1;
+  row_ends.assign(rows + 1, 0);
+  for (const T& e : v) ++row_ends[row_of(e) - first + 1];
+  for (int r = 0; r < rows; ++r) row_ends[r + 1] += row_ends[r];  // now where each row starts
+  sorted.resize(v.size());
+  for (const T& e : v) sorted[row_ends[row_of(e) - first]++] = e;  // ... ends
+  for (int r = 0, begin = 0; r < rows; begin = row_ends[r++])
+    std::sort(sorted.begin() + begin, sorted.begin() + row_ends[r], less);
+  v.swap(sorted);
+}
+
+// Segments by row, then by first column. Pieces of a row with the same x0 may come in any order:
+// merge_rows() then keeps the largest x1 whatever the order.
+void sort_rows(std::vector<RowSegment>& v, PolygonScratch& s) {
+  sort_rows(
+      v, s.sorted, s.row_ends, [](const RowSegment& a) { return a.row; },
+      [](const RowSegment& a, const RowSegment& b) { return a.x0 < b.x0; });
 }
 
 // Appends `pieces` (sorted) to `out` with the overlapping and adjacent ones of a row merged; a
@@ -108,7 +116,10 @@ void polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGr
   });
   // Inside the polygon on a centre line: between the 1st and 2nd crossing, the 3rd and 4th...
   // Every node whose cell meets the polygon is on an edge's part or on such a span.
-  std::sort(s.crossings.begin(), s.crossings.end());
+  using Crossing = std::pair<int, double>;
+  sort_rows(
+      s.crossings, s.sorted_crossings, s.row_ends, [](const Crossing& c) { return c.first; },
+      [](const Crossing& a, const Crossing& b) { return a.second < b.second; });
   for (std::size_t i = 0; i + 1 < s.crossings.size();) {
     const auto [row, x0] = s.crossings[i];
     const auto [next_row, x1] = s.crossings[i + 1];

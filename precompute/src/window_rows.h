@@ -18,8 +18,9 @@ struct RowSegment {
 struct PolygonScratch {
   std::vector<RowSegment> pieces, merged, padded, sorted;
   std::vector<std::pair<int, double>> crossings;  // (row, x) of the edges at rows' centre lines
-  std::vector<int> row_ends;                      // per row: where its segments end, sorted
-  std::vector<int> pad_columns;                   // per row: columns of the padding
+  std::vector<std::pair<int, double>> sorted_crossings;
+  std::vector<int> row_ends;     // per row: where its segments end, sorted
+  std::vector<int> pad_columns;  // per row: columns of the padding
 };
 
 // The grid the segments index: `width` x `height` nodes of `node_angle` radians.
