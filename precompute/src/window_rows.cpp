@@ -149,12 +149,19 @@ void polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGr
                  std::sin(std::min(y + 1 + pad, grid.height) * grid.node_angle));
     s.pad_columns[y - y_lo] = static_cast<int>(std::ceil(pad / std::max(sin_theta, min_sin)));
   }
-  for (const RowSegment& m : s.merged)
-    for (int y = std::max(0, m.row - pad); y <= std::min(grid.height - 1, m.row + pad); ++y) {
-      const int columns = s.pad_columns[y - y_lo];
-      s.padded.push_back({y, m.x0 - columns, m.x1 + columns});
-    }
-  sort_rows(s.padded, s);
+  // Row by row, the merged segments of the rows within `pad` of it, widened: `merged` is sorted
+  // by row, so they are a sliding range of it; only the few of one row need sorting.
+  std::size_t begin = 0, end = 0;
+  for (int y = y_lo; y <= y_hi; ++y) {
+    while (begin < s.merged.size() && s.merged[begin].row < y - pad) ++begin;
+    while (end < s.merged.size() && s.merged[end].row <= y + pad) ++end;
+    const std::size_t first = s.padded.size();
+    const int columns = s.pad_columns[y - y_lo];
+    for (std::size_t i = begin; i < end; ++i)
+      s.padded.push_back({y, s.merged[i].x0 - columns, s.merged[i].x1 + columns});
+    std::sort(s.padded.begin() + static_cast<std::ptrdiff_t>(first), s.padded.end(),
+              [](const RowSegment& a, const RowSegment& b) { return a.x0 < b.x0; });
+  }
   merge_rows(s.padded, grid.width, out);
 }
 
