@@ -42,6 +42,23 @@ struct QuadratureScratch {
   PolygonScratch polygon;
 };
 
+// (cos t, sin t) at t = 2 pi j / n for j = 0..n, for the n of the windows' outlines (multiples of
+// 4 up to kMaxOutlineAngles): computed once, as std::cos and std::sin of the same t, rather than
+// per pixel.
+inline constexpr int kMaxOutlineAngles = 256;
+inline const Vec2* outline_angles(int n) {
+  static const std::vector<std::vector<Vec2>> tables = [] {
+    std::vector<std::vector<Vec2>> t(kMaxOutlineAngles / 4 + 1);
+    for (int m = 4; m <= kMaxOutlineAngles; m += 4)
+      for (int j = 0; j <= m; ++j) {
+        const double angle = 2 * kPi * j / m;
+        t[m / 4].push_back(Vec2(std::cos(angle), std::sin(angle)));
+      }
+    return t;
+  }();
+  return tables[n / 4].data();
+}
+
 template <typename Kernel, typename Visible = AlwaysVisible>
 class Quadrature {
   using Value = typename Kernel::Value;
@@ -62,6 +79,8 @@ class Quadrature {
   static constexpr double kPoleGap = 0.002;  // radians: nearer a pole, lat-long lines fold
   static constexpr double kPolygonCost = 2048;
   static constexpr double kMaxEllipseAspect = 4;
+  static_assert(kOutline % 4 == 0 && kSlopeOutlineStart % 4 == 0 &&
+                kSlopeOutlineStart <= kMaxOutlineAngles);  // outline_angles()
 
  public:
   // `horizon` is the normal of the half space the kernel lives in (K = 0 below it), or zero for
@@ -152,11 +171,12 @@ class Quadrature {
     return 2 * kPi * (1 - std::cos(std::min(radius, widest)));
   }
 
-  // The point at angle t on the outline of the window in slope space, `radius` deviations out,
-  // as an incident direction (world): wo reflected about that half vector.
-  Vec3 slope_outline(double t, double radius) const {
-    const Vec3 h = Vec3(radius * slopes_->sx * std::cos(t), radius * slopes_->sy * std::sin(t), 1)
-                       .normalized();
+  // The point at angle t, given as (cos t, sin t), on the outline of the window in slope space,
+  // `radius` deviations out, as an incident direction (world): wo reflected about that half
+  // vector.
+  Vec3 slope_outline(const Vec2& angle, double radius) const {
+    const Vec3 h =
+        Vec3(radius * slopes_->sx * angle.x(), radius * slopes_->sy * angle.y(), 1).normalized();
     return slopes_->frame.from_local(reflect(slopes_->wo, h));
   }
   // The largest angle between the peak and the outline of the slope window.
@@ -164,8 +184,8 @@ class Quadrature {
     double extent = 0;
     for (int k = 0; k < kOutline; ++k)
       extent = std::max(
-          extent, std::acos(std::clamp(slope_outline(2 * kPi * k / kOutline, reach_).dot(peak_),
-                                       -1.0, 1.0)));
+          extent, std::acos(std::clamp(
+                      slope_outline(outline_angles(kOutline)[k], reach_).dot(peak_), -1.0, 1.0)));
     return extent;
   }
 
@@ -399,10 +419,11 @@ class Quadrature {
     // Circumscribed: the polygon's edges stay outside the ellipse.
     const double grow = 1 / std::cos(kPi / kOutline);
     std::array<Vec2, kOutline + 1> p;
+    const Vec2* angles = outline_angles(kOutline);
     for (int k = 0; k < kOutline; ++k) {
-      const double t = 2 * kPi * k / kOutline;
+      const Vec2& t = angles[k];
       const Vec3 d = slopes_ ? slope_outline(t, grow * (reach_ + margin * inv_minor_))
-                             : peak_ + grow * (a * std::cos(t) * major_ + b * std::sin(t) * minor_);
+                             : peak_ + grow * (a * t.x() * major_ + b * t.y() * minor_);
       const Vec2 uv = EnvMap::texcoord(d);
       double x = uv.x() * grid_w_ - x_p;
       x -= grid_w_ * std::round(x / grid_w_);
@@ -427,12 +448,14 @@ class Quadrature {
     const bool north = within_slopes(Vec3(0, 1, 0), radius);
     const bool south = within_slopes(Vec3(0, -1, 0), radius);
     if (north && south) return;
-    const Vec2 uv = EnvMap::texcoord(slope_outline(0, radius));
+    const Vec2* angles = outline_angles(n);
+    const Vec2 uv = EnvMap::texcoord(slope_outline(angles[0], radius));
     if (kPi * std::min(uv.y(), 1 - uv.y()) < kPoleGap) return;
     outline_[0] = Vec2(2 * kPi * uv.x(), kPi * uv.y());
     int count = 1;
     for (int k = 0; k < n; ++k)
-      if (!append_outline(2 * kPi * k / n, 2 * kPi * (k + 1) / n, radius, 10, count)) return;
+      if (!append_outline(2 * kPi * k / n, 2 * kPi * (k + 1) / n, angles[k + 1], radius, 10, count))
+        return;
     if (north || south) {  // the last point is the first one turn along: to the pole and back
       if (count + 3 > kSlopeOutline + 1) return;
       const double theta = north ? 0.0 : kPi;
@@ -450,11 +473,13 @@ class Quadrature {
     outline_n_ = points, outline_area_ = std::abs(area) / 2, outline_perimeter_ = perimeter;
   }
 
-  // Appends the outline's points after angle t0 (the last appended) up to t1, halving the step
-  // (at most `depth` times, else false) where consecutive points are more than kOutlineEdge apart
-  // in (phi, theta), as near a pole, so that straight lines between them follow the outline.
-  bool append_outline(double t0, double t1, double radius, int depth, int& count) {
-    const Vec2 uv = EnvMap::texcoord(slope_outline(t1, radius));
+  // Appends the outline's points after angle t0 (the last appended) up to t1 (whose cosine and
+  // sine are `at_t1`), halving the step (at most `depth` times, else false) where consecutive
+  // points are more than kOutlineEdge apart in (phi, theta), as near a pole, so that straight
+  // lines between them follow the outline.
+  bool append_outline(double t0, double t1, const Vec2& at_t1, double radius, int depth,
+                      int& count) {
+    const Vec2 uv = EnvMap::texcoord(slope_outline(at_t1, radius));
     if (kPi * std::min(uv.y(), 1 - uv.y()) < kPoleGap) return false;
     double x = 2 * kPi * uv.x();
     x -= 2 * kPi * std::round((x - outline_[count - 1].x()) / (2 * kPi));
@@ -462,8 +487,9 @@ class Quadrature {
     if ((p - outline_[count - 1]).norm() > kOutlineEdge) {
       if (depth == 0) return false;  // folded too fast to follow, right by a pole
       const double mid = (t0 + t1) / 2;
-      return append_outline(t0, mid, radius, depth - 1, count) &&
-             append_outline(mid, t1, radius, depth - 1, count);
+      return append_outline(t0, mid, Vec2(std::cos(mid), std::sin(mid)), radius, depth - 1,
+                            count) &&
+             append_outline(mid, t1, at_t1, radius, depth - 1, count);
     }
     if (count > kSlopeOutline) return false;
     outline_[count++] = p;
