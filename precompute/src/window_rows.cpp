@@ -142,11 +142,14 @@ void polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGr
   // Columns are narrower by sin(theta): per row, the smallest over the rows the padding spans.
   const int y_lo = std::max(0, s.merged.front().row - pad);
   const int y_hi = std::min(grid.height - 1, s.merged.back().row + pad);
+  // sin(theta) at the rows' edges from y_lo - pad to y_hi + 1 + pad, once each.
+  const int edge_lo = std::max(y_lo - pad, 0), edge_hi = std::min(y_hi + 1 + pad, grid.height);
+  s.edge_sin.resize(edge_hi - edge_lo + 1);
+  for (int e = edge_lo; e <= edge_hi; ++e) s.edge_sin[e - edge_lo] = std::sin(e * grid.node_angle);
   s.pad_columns.resize(y_hi - y_lo + 1);
   for (int y = y_lo; y <= y_hi; ++y) {
-    const double sin_theta =
-        std::min(std::sin(std::max(y - pad, 0) * grid.node_angle),
-                 std::sin(std::min(y + 1 + pad, grid.height) * grid.node_angle));
+    const double sin_theta = std::min(s.edge_sin[std::max(y - pad, 0) - edge_lo],
+                                      s.edge_sin[std::min(y + 1 + pad, grid.height) - edge_lo]);
     s.pad_columns[y - y_lo] = static_cast<int>(std::ceil(pad / std::max(sin_theta, min_sin)));
   }
   // Row by row, the merged segments of the rows within `pad` of it, widened: `merged` is sorted

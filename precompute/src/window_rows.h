@@ -21,6 +21,7 @@ struct PolygonScratch {
   std::vector<std::pair<int, double>> sorted_crossings;
   std::vector<int> row_ends;     // per row: where its segments end, sorted
   std::vector<int> pad_columns;  // per row: columns of the padding
+  std::vector<double> edge_sin;  // sin(theta) at the rows' edges
 };
 
 // The grid the segments index: `width` x `height` nodes of `node_angle` radians.
