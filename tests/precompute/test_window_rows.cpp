@@ -1,6 +1,7 @@
 // The quadrature window's rows (precompute/src/window_rows.h): every node whose cell meets the
 // polygon is in a segment, the convex scan agrees on convex polygons, a curved sliver is not
-// filled between its ends, padding and rows wider than the grid.
+// filled between its ends, padding (exactly the dilation of the unpadded cells) and rows wider
+// than the grid.
 #include "window_rows.h"
 
 #include <gtest/gtest.h>
@@ -163,6 +164,35 @@ TEST(WindowRows, PaddingAddsRowsAndColumnsAround) {
   }
   EXPECT_EQ(segments.front().row, 62);
   EXPECT_EQ(segments.back().row, 66);
+}
+
+// The padded segments cover exactly the cells within `pad` rows and pad / sin(theta) columns of a
+// cell of the unpadded ones, sin(theta) the smallest over the rows the padding spans: curved
+// slivers, whose rows hold several segments and whose padding merges some of them.
+TEST(WindowRows, PaddingIsTheDilationOfTheUnpaddedCells) {
+  constexpr int kPad = 2;
+  constexpr double kMinSin = 0.05;
+  for (int trial = 0; trial < 12; ++trial) {
+    const std::vector<Vec2> p =
+        arc({128, 64}, 20 + 4 * trial, 1.5 + 0.5 * trial, 0.3 * trial, 0.3 * trial + 4.5, 64);
+    const int n = static_cast<int>(p.size()) - 1;
+    std::vector<RowSegment> unpadded, padded;
+    PolygonScratch scratch;
+    polygon_segments(p.data(), n, 0, kMinSin, kGrid, unpadded, scratch);
+    polygon_segments(p.data(), n, kPad, kMinSin, kGrid, padded, scratch);
+    expect_ordered_and_disjoint(padded);
+    auto columns = [&](int y) {
+      auto sin_at = [&](int edge) { return std::sin(edge * kGrid.node_angle); };
+      const double s =
+          std::min(sin_at(std::max(y - kPad, 0)), sin_at(std::min(y + 1 + kPad, kGrid.height)));
+      return static_cast<int>(std::ceil(kPad / std::max(s, kMinSin)));
+    };
+    Cells expected;
+    for (const auto& [row, x] : cells_of(unpadded))
+      for (int y = std::max(0, row - kPad); y <= std::min(kGrid.height - 1, row + kPad); ++y)
+        for (int dx = -columns(y); dx <= columns(y); ++dx) expected.insert({y, x + dx});
+    EXPECT_EQ(cells_of(padded), expected) << "trial " << trial;
+  }
 }
 
 TEST(WindowRows, ARowWiderThanTheGridIsOneWholeRow) {
