@@ -28,12 +28,16 @@ void sort_rows(std::vector<T>& v, std::vector<T>& sorted, std::vector<int>& row_
   v.swap(sorted);
 }
 
-// Segments by row, then by first column. Pieces of a row with the same x0 may come in any order:
-// merge_rows() then keeps the largest x1 whatever the order.
+// Segments of a row in order of their first column. Pieces of a row with the same x0 may come in
+// any order: merge_rows() then keeps the largest x1 whatever the order.
+bool by_first_column(const RowSegment& a, const RowSegment& b) {
+  return a.x0 < b.x0;
+}
+
+// Segments by row, then by first column.
 void sort_rows(std::vector<RowSegment>& v, PolygonScratch& s) {
   sort_rows(
-      v, s.sorted, s.row_ends, [](const RowSegment& a) { return a.row; },
-      [](const RowSegment& a, const RowSegment& b) { return a.x0 < b.x0; });
+      v, s.sorted, s.row_ends, [](const RowSegment& a) { return a.row; }, by_first_column);
 }
 
 // Appends `pieces` (sorted) to `out` with the overlapping and adjacent ones of a row merged; a
@@ -146,24 +150,20 @@ void polygon_segments(const Vec2* p, int n, int pad, double min_sin, const RowGr
   const int edge_lo = std::max(y_lo - pad, 0), edge_hi = std::min(y_hi + 1 + pad, grid.height);
   s.edge_sin.resize(edge_hi - edge_lo + 1);
   for (int e = edge_lo; e <= edge_hi; ++e) s.edge_sin[e - edge_lo] = std::sin(e * grid.node_angle);
-  s.pad_columns.resize(y_hi - y_lo + 1);
-  for (int y = y_lo; y <= y_hi; ++y) {
-    const double sin_theta = std::min(s.edge_sin[std::max(y - pad, 0) - edge_lo],
-                                      s.edge_sin[std::min(y + 1 + pad, grid.height) - edge_lo]);
-    s.pad_columns[y - y_lo] = static_cast<int>(std::ceil(pad / std::max(sin_theta, min_sin)));
-  }
   // Row by row, the merged segments of the rows within `pad` of it, widened: `merged` is sorted
   // by row, so they are a sliding range of it; only the few of one row need sorting.
   std::size_t begin = 0, end = 0;
   for (int y = y_lo; y <= y_hi; ++y) {
     while (begin < s.merged.size() && s.merged[begin].row < y - pad) ++begin;
     while (end < s.merged.size() && s.merged[end].row <= y + pad) ++end;
+    const double sin_theta = std::min(s.edge_sin[std::max(y - pad, 0) - edge_lo],
+                                      s.edge_sin[std::min(y + 1 + pad, grid.height) - edge_lo]);
+    const int columns = static_cast<int>(std::ceil(pad / std::max(sin_theta, min_sin)));
     const std::size_t first = s.padded.size();
-    const int columns = s.pad_columns[y - y_lo];
     for (std::size_t i = begin; i < end; ++i)
       s.padded.push_back({y, s.merged[i].x0 - columns, s.merged[i].x1 + columns});
     std::sort(s.padded.begin() + static_cast<std::ptrdiff_t>(first), s.padded.end(),
-              [](const RowSegment& a, const RowSegment& b) { return a.x0 < b.x0; });
+              by_first_column);
   }
   merge_rows(s.padded, grid.width, out);
 }

@@ -20,7 +20,6 @@ struct PolygonScratch {
   std::vector<std::pair<int, double>> crossings;  // (row, x) of the edges at rows' centre lines
   std::vector<std::pair<int, double>> sorted_crossings;
   std::vector<int> row_ends;     // per row: where its segments end, sorted
-  std::vector<int> pad_columns;  // per row: columns of the padding
   std::vector<double> edge_sin;  // sin(theta) at the rows' edges
 };
 
