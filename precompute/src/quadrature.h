@@ -206,11 +206,11 @@ class Quadrature {
   }
   // The largest angle between the peak and the outline of the slope window.
   double outline_extent() const {
+    const Vec2* angles = outline_angles(kOutline);
     double extent = 0;
     for (int k = 0; k < kOutline; ++k)
       extent = std::max(
-          extent, std::acos(std::clamp(
-                      slope_outline(outline_angles(kOutline)[k], reach_).dot(peak_), -1.0, 1.0)));
+          extent, std::acos(std::clamp(slope_outline(angles[k], reach_).dot(peak_), -1.0, 1.0)));
     return extent;
   }
 
