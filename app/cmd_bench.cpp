@@ -64,6 +64,31 @@ void eta_batch_rows(Renderer& renderer, int repeats) {
   }
 }
 
+// Ward's grid (the table's 15 x 15 alphas) rendered in one pass, as the precompute renders it
+// (Renderer::ward_grid): ms per image.
+void ward_grid_rows(Renderer& renderer, int repeats) {
+  const ParamGrid grid(Ward::kParams);
+  const auto start = std::chrono::steady_clock::now();
+  for (int r = 0; r < repeats; ++r) renderer.ward_grid(grid.axis(0), grid.axis(1));
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() /
+      (repeats * double(grid.node_count()));
+  std::printf("\n| ward grid in one pass | ms per image |\n|---|---|\n| %zu x %zu | %.1f |\n",
+              grid.axis(0).size(), grid.axis(1).size(), ms);
+}
+
+// "alpha_x 0.011, alpha_y 0.010"
+std::string ratio_cell(const std::vector<AccuracyResult>& results) {
+  std::string cell;
+  for (const AccuracyResult& r : results) {
+    char one[96];
+    std::snprintf(one, sizeof one, "%s%s %.3f", cell.empty() ? "" : ", ", r.param.c_str(),
+                  r.ratio());
+    cell += one;
+  }
+  return cell;
+}
+
 void run_render_bench(const BenchOptions& o) {
   const EnvMap env = load_env(o.scene);
   const Scene scene = load_scene(o.scene);
@@ -83,13 +108,14 @@ void run_render_bench(const BenchOptions& o) {
     const std::string name(model_info(s.model).name);
     const double ms = time_image(renderer, s, o.repeats);
     std::string ratios;
-    if (o.accuracy)
-      for (const AccuracyResult& r : measure_accuracy(renderer, reference, s)) {
-        char cell[96];
-        std::snprintf(cell, sizeof cell, "%s%s %.3f", ratios.empty() ? "" : ", ", r.param.c_str(),
-                      r.ratio());
-        ratios += cell;
-      }
+    if (o.accuracy) {
+      // Ward's also as the precompute renders it, in its grid.
+      std::vector<Image> images{renderer.specular(make_lobe(s.model, s.params))};
+      if (s.model == ModelId::ward) images.push_back(ward_grid_image(renderer, s));
+      const auto results = measure_accuracy(images, reference, s);
+      ratios = ratio_cell(results[0]);
+      if (results.size() > 1) ratios += " (in its grid: " + ratio_cell(results[1]) + ")";
+    }
     std::printf("| %s | %s | %.1f | %s |\n", name.c_str(), s.name.c_str(), ms, ratios.c_str());
     std::fflush(stdout);
     return ms;
@@ -105,6 +131,7 @@ void run_render_bench(const BenchOptions& o) {
     if (wanted(sliver_setting())) row(sliver_setting());
   }
   if (o.model.empty() || o.model == "he") eta_batch_rows(renderer, o.repeats);
+  if (o.model.empty() || o.model == "ward") ward_grid_rows(renderer, o.repeats);
   std::printf("\n| model | mean ms per image (smooth, medium, rough) |\n|---|---|\n");
   for (const auto& [model, sum] : total_ms)
     std::printf("| %s | %.1f |\n", std::string(model_info(model).name).c_str(),

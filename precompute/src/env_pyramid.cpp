@@ -34,7 +34,21 @@ LatLongRect lat_long_rect(double x0, double x1, double y0, double y1, int width,
   return {2 * half_dphi * 2 * sin_tm * sin_hd, moment.normalized()};
 }
 
+void store_spread(std::vector<float>& spread, std::size_t node, const Eigen::Matrix3d& m) {
+  const double values[6] = {m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2)};
+  for (int k = 0; k < 6; ++k) spread[6 * node + k] = static_cast<float>(values[k]);
+}
+
 }  // namespace
+
+Eigen::Matrix3d EnvPyramid::texel_spread(int x, int y, int width, int height) {
+  const double theta = kPi * (y + 0.5) / height, phi = 2 * kPi * ((x + 0.5) / width - 0.5);
+  const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
+  const Vec3 e_theta(-ct * sp, -st, ct * cp), e_phi(-cp, 0, -sp);
+  const double d_theta = kPi / height, d_phi = 2 * kPi / width * st;
+  return (d_theta * d_theta / 12) * e_theta * e_theta.transpose() +
+         (d_phi * d_phi / 12) * e_phi * e_phi.transpose();
+}
 
 EnvPyramid::EnvPyramid(const EnvMap& env) {
   build_texels(env);
@@ -96,11 +110,13 @@ void EnvPyramid::build_texels(const EnvMap& env) {
                std::vector<float>(3 * count),
                std::vector<float>(3 * count),
                std::vector<float>(3 * count),
+               std::vector<float>(6 * count),
                std::vector<double>(count)};
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const LatLongRect rect = lat_long_rect(x, x + 1, y, y + 1, w, h);
       const std::size_t i = texels.index(x, y);
+      store_spread(texels.spread, i / 3, texel_spread(x, y, w, h));
       const Rgb power = env.texel(x, y) * rect.solid_angle;
       for (int c = 0; c < 3; ++c) texels.centroid[i + c] = static_cast<float>(rect.centroid[c]);
       for (int c = 0; c < 3; ++c) texels.power[i + c] = static_cast<float>(power[c]);
@@ -118,11 +134,12 @@ void EnvPyramid::build_texels(const EnvMap& env) {
 // A parent's power is its children's sum; its centroid their luminance-weighted mean direction
 // (the solid-angle weighted one where they are black, so that it stays inside the node).
 EnvPyramid::Level EnvPyramid::half_of(const Level& fine) const {
-  Level coarse{(fine.width + 1) / 2, (fine.height + 1) / 2, {}, {}, {}, {}};
+  Level coarse{(fine.width + 1) / 2, (fine.height + 1) / 2, {}, {}, {}, {}, {}};
   const std::size_t count = static_cast<std::size_t>(coarse.width) * coarse.height;
   coarse.centroid.assign(3 * count, 0.f);
   coarse.power.assign(3 * count, 0.f);
   coarse.weight.assign(3 * count, 0.f);
+  coarse.spread.assign(6 * count, 0.f);
   coarse.luminance.assign(count, 0.0);
   for (int y = 0; y < coarse.height; ++y) {
     for (int x = 0; x < coarse.width; ++x) {
@@ -140,7 +157,22 @@ EnvPyramid::Level EnvPyramid::half_of(const Level& fine) const {
         }
       }
       const std::size_t i = coarse.index(x, y);
-      const Vec3 centroid = (lum > 0 && lit.squaredNorm() > 0 ? lit : plain).normalized();
+      const bool lit_up = lum > 0 && lit.squaredNorm() > 0;
+      const Vec3 centroid = (lit_up ? lit : plain).normalized();
+      // The children's spreads and their offsets from the centroid, weighed as the centroid is.
+      Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+      double total = 0;
+      for (int fy = 2 * y; fy < std::min(2 * y + 2, fine.height); ++fy) {
+        for (int fx = 2 * x; fx < std::min(2 * x + 2, fine.width); ++fx) {
+          const std::size_t j = fine.index(fx, fy);
+          const double weight = lit_up ? fine.luminance[j / 3] : 1.0;
+          const Vec3 offset =
+              Vec3(fine.centroid[j], fine.centroid[j + 1], fine.centroid[j + 2]) - centroid;
+          spread += weight * (fine.spread_at(j) + offset * offset.transpose());
+          total += weight;
+        }
+      }
+      store_spread(coarse.spread, i / 3, spread / total);
       for (int c = 0; c < 3; ++c) coarse.centroid[i + c] = static_cast<float>(centroid[c]);
       for (int c = 0; c < 3; ++c) coarse.power[i + c] = static_cast<float>(power[c]);
       coarse.luminance[i / 3] = lum;

@@ -11,6 +11,7 @@
 
 #include <brdfnav/precompute/env_map.h>
 
+#include <cmath>
 #include <vector>
 
 namespace brdfnav {
@@ -18,6 +19,21 @@ namespace brdfnav {
 // The corrected midpoint rule's factor of the second differences: the error of the midpoint rule
 // over a cell is its second derivatives times the cell's size squared over 24.
 inline constexpr double kSecondDifferenceFactor = 1.0 / 24;
+
+// The directions of the n x n pieces of texel (x, y) of a map width x height, rows then columns,
+// each with an equal share of its solid angle: the texel's centre moved along the tangents of
+// theta and phi (exact to second order in the texel's size), f(direction) for each.
+template <typename F>
+void for_each_texel_piece(int x, int y, int width, int height, int n, F&& f) {
+  const double theta = kPi * (y + 0.5) / height, phi = 2 * kPi * ((x + 0.5) / width - 0.5);
+  const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
+  const Vec3 centre(-st * sp, ct, st * cp), e_theta(-ct * sp, -st, ct * cp), e_phi(-cp, 0, -sp);
+  const double d_theta = kPi / height / n, d_phi = 2 * kPi / width * st / n;
+  for (int j = 0; j < n; ++j) {
+    const Vec3 row = centre + ((j + 0.5) - 0.5 * n) * d_theta * e_theta;
+    for (int i = 0; i < n; ++i) f((row + ((i + 0.5) - 0.5 * n) * d_phi * e_phi).normalized());
+  }
+}
 
 struct EnvNode {
   Vec3 centroid;  // unit
@@ -43,6 +59,19 @@ class EnvPyramid {
     const std::size_t i = l.index(x, y);
     return {Vec3(l.centroid[i], l.centroid[i + 1], l.centroid[i + 2]), rgb(l.power, i),
             rgb(l.weight, i)};
+  }
+  // The luminance-weighted covariance of the directions within a node about its centroid
+  // (world): how its power is spread, to second order. A texel's is its own extent's.
+  Eigen::Matrix3d spread(int level, int x, int y) const {
+    const Level& l = levels_[level];
+    return l.spread_at(l.index(x, y));
+  }
+  // ... of texel (x, y) of a map width x height, as a flat rectangle in its tangent plane.
+  static Eigen::Matrix3d texel_spread(int x, int y, int width, int height);
+  Vec3 centroid(int level, int x, int y) const {
+    const Level& l = levels_[level];
+    const std::size_t i = l.index(x, y);
+    return Vec3(l.centroid[i], l.centroid[i + 1], l.centroid[i + 2]);
   }
   Rgb power(int level, int x, int y) const {
     const Level& l = levels_[level];
@@ -73,12 +102,19 @@ class EnvPyramid {
   }
 
  private:
-  // Per node three floats in each array: the pieces of split texels read the power alone.
+  // Per node three floats in each array (six in spread: xx, xy, xz, yy, yz, zz): the pieces of
+  // split texels read the power alone.
   struct Level {
     int width = 0, height = 0;
-    std::vector<float> centroid, power, weight;
+    std::vector<float> centroid, power, weight, spread;
     std::vector<double> luminance;  // of the node's power, while building
     std::size_t index(int x, int y) const { return 3 * (static_cast<std::size_t>(y) * width + x); }
+    Eigen::Matrix3d spread_at(std::size_t i) const {
+      const float* s = &spread[2 * i];
+      Eigen::Matrix3d m;
+      m << s[0], s[1], s[2], s[1], s[3], s[4], s[2], s[4], s[5];
+      return m;
+    }
   };
   static Rgb rgb(const std::vector<float>& values, std::size_t i) {
     return Rgb(values[i], values[i + 1], values[i + 2]);

@@ -503,9 +503,7 @@ class Quadrature {
   }
 
   // A hot texel, in pieces of hot_split_^2 wherever a window twice as wide reaches it (the
-  // lobe's tails see lamps from afar, where the kernel falls fastest); whole farther out. Each
-  // piece sits at the texel's centre moved along the tangents of theta and phi (exact to second
-  // order in the texel's size) and carries an equal share of its solid angle.
+  // lobe's tails see lamps from afar, where the kernel falls fastest); whole farther out.
   Sum hot_sum(const EnvPyramid::HotTexel& t) const {
     // Beyond four times the window even a lamp 10^5 times the map's mean adds nothing: the
     // lobes fall at least like Gaussians of their width there (exp(-98) at the default reach).
@@ -513,17 +511,10 @@ class Quadrature {
     if (!in_window(t.centroid, margin, 4 * reach_)) return zero<Sum>();
     if (hot_split_ == 1 || !in_window(t.centroid, margin, 2 * reach_))
       return weighted(t.radiance, Value(value(t.centroid) * t.solid_angle));
-    const int w = env_.width(0), h = env_.height(0), n = hot_split_;
-    const double theta = kPi * (t.y + 0.5) / h, phi = 2 * kPi * ((t.x + 0.5) / w - 0.5);
-    const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
-    const Vec3 centre(-st * sp, ct, st * cp), e_theta(-ct * sp, -st, ct * cp), e_phi(-cp, 0, -sp);
-    const double d_theta = kPi / h / n, d_phi = 2 * kPi / w * st / n;
+    const int n = hot_split_;
     Value sum = zero<Value>();
-    for (int j = 0; j < n; ++j) {
-      const Vec3 row = centre + ((j + 0.5) - 0.5 * n) * d_theta * e_theta;
-      for (int i = 0; i < n; ++i)
-        sum += value((row + ((i + 0.5) - 0.5 * n) * d_phi * e_phi).normalized());
-    }
+    for_each_texel_piece(t.x, t.y, env_.width(0), env_.height(0), n,
+                         [&](const Vec3& w) { sum += value(w); });
     return weighted(t.radiance, Value(sum * (t.solid_angle / (n * n))));
   }
 

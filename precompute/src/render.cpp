@@ -3,6 +3,7 @@
 #include <brdfnav/precompute/parallel_for.h>
 #include "geometry.h"
 #include "quadrature.h"
+#include "ward_grid.h"
 
 #include <cstdio>
 #include <optional>
@@ -201,6 +202,36 @@ struct Renderer::Impl {
         });
   }
 
+  // Renderer::ward_grid().
+  std::vector<Image> ward_grid_images(std::span<const double> alpha_x,
+                                      std::span<const double> alpha_y) {
+    const WardGridQuadrature quadrature(pyramid, alpha_x, alpha_y, options.quality);
+    const std::size_t count = quadrature.nx() * quadrature.ny();
+    std::vector<Image> images(count, Image(resolution, resolution));
+    std::vector<WardGridScratch> scratch(threads());
+    std::vector<std::vector<double>> values(threads(), std::vector<double>(3 * count));
+    const auto row = [&](std::size_t y, int worker) {
+      for (int x = 0; x < resolution; ++x) {
+        const SurfacePoint& p = surface.points[y * resolution + x];
+        if (!p.covered) continue;
+        const Frame frame = pixel_frame(p);
+        std::function<bool(const Vec3&)> visible;
+        if (!scene.convex()) visible = [&](const Vec3& w) { return !scene.occluded(p, w); };
+        double* v = values[worker].data();
+        quadrature.integrate(frame, frame.to_local(kViewDirection), visible, scratch[worker], v);
+        for (std::size_t k = 0; k < count; ++k) {
+          float* out = images[k].pixel(x, int(y));
+          for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(v[3 * k + c]);
+          out[3] = 1.f;
+        }
+      }
+    };
+    parallel_for(std::size_t(resolution), threads(), row, [&](std::size_t done) {
+      if (options.progress) options.progress(int(done), resolution);
+    });
+    return images;
+  }
+
   // specular() of each of `lobe` with kFresnelParameter = params[k], in one pass.
   template <typename L>
   std::vector<Image> batch_images(const L& lobe, std::span<const double> params) {
@@ -308,6 +339,11 @@ std::vector<Image> Renderer::specular(std::span<const Lobe> lobes) {
     for (std::size_t k = 0; k < group.size(); ++k) images[group[k]] = std::move(rendered[k]);
   }
   return images;
+}
+
+std::vector<Image> Renderer::ward_grid(std::span<const double> alpha_x,
+                                       std::span<const double> alpha_y) {
+  return impl_->ward_grid_images(alpha_x, alpha_y);
 }
 
 Image Renderer::render(const Material& material) {

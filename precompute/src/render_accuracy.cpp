@@ -1,6 +1,9 @@
 #include <brdfnav/precompute/render_accuracy.h>
 
+#include <brdfnav/core/grid.h>
+
 #include <algorithm>
+#include <stdexcept>
 
 namespace brdfnav {
 
@@ -45,20 +48,35 @@ RenderQuality reference_quality(const RenderQuality& quality) {
 
 std::vector<AccuracyResult> measure_accuracy(Renderer& renderer, Renderer& reference,
                                              const AccuracySetting& setting) {
+  const Image image = renderer.specular(make_lobe(setting.model, setting.params));
+  return measure_accuracy(std::span(&image, 1), reference, setting).front();
+}
+
+std::vector<std::vector<AccuracyResult>> measure_accuracy(std::span<const Image> images,
+                                                          Renderer& reference,
+                                                          const AccuracySetting& setting) {
   const ModelInfo& info = model_info(setting.model);
   const Image reference_image = reference.specular(make_lobe(setting.model, setting.params));
-  const double error =
-      image_distance(renderer.specular(make_lobe(setting.model, setting.params)), reference_image);
-  std::vector<AccuracyResult> results;
+  std::vector<std::vector<AccuracyResult>> results(images.size());
   for (std::size_t d = 0; d < info.params.size(); ++d) {
     std::vector<double> stepped = setting.params;
     // Up by 10%, or down where that would leave the valid range (cz near 1).
     stepped[d] *= stepped[d] * 1.1 <= info.params[d].valid_max ? 1.1 : 1 / 1.1;
-    const Image next = reference.specular(make_lobe(setting.model, stepped));
-    results.push_back(
-        {std::string(info.params[d].name), error, image_distance(reference_image, next)});
+    const double step =
+        image_distance(reference_image, reference.specular(make_lobe(setting.model, stepped)));
+    for (std::size_t k = 0; k < images.size(); ++k)
+      results[k].push_back(
+          {std::string(info.params[d].name), image_distance(images[k], reference_image), step});
   }
   return results;
+}
+
+Image ward_grid_image(Renderer& renderer, const AccuracySetting& setting) {
+  if (setting.model != ModelId::ward) throw std::invalid_argument("ward_grid_image: not Ward");
+  const ParamGrid grid(Ward::kParams);
+  const std::vector<double> x{grid.axis(0).front(), setting.params[0], grid.axis(0).back()};
+  const std::vector<double> y{grid.axis(1).front(), setting.params[1], grid.axis(1).back()};
+  return renderer.ward_grid(x, y)[4];  // (1, 1): the setting
 }
 
 }  // namespace brdfnav

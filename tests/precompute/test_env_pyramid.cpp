@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 namespace brdfnav {
@@ -99,6 +100,38 @@ TEST(EnvPyramid, WeightsAreTheCorrectedMidpointRuleSummedByParts) {
     // The weights are stored as floats, like the powers.
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(weighed[c], rule[c], 1e-6 * rule[c]) << level;
   }
+}
+
+// A node's spread is the luminance-weighted covariance of the directions it covers about its
+// centroid: summed here over 8 x 8 pieces of each of its texels, on a map without hot texels
+// whose texels differ, away from the poles (where texels are not rectangles).
+TEST(EnvPyramid, SpreadIsTheLuminanceWeightedCovarianceOfItsDirections) {
+  const int w = 256, h = 128;
+  std::vector<float> rgb(3 * w * h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c)
+        rgb[3 * (std::size_t(y) * w + x) + c] = float(1 + ((x * 7 + y * 13 + c) % 11));
+  const EnvPyramid pyramid(EnvMap(w, h, std::move(rgb), "pattern"));
+  ASSERT_TRUE(pyramid.hot().empty());
+  for (const auto& [level, x, y] : {std::array{0, 5, 37}, {2, 3, 12}, {2, 60, 25}, {3, 1, 9}}) {
+    const Vec3 centroid = pyramid.centroid(level, x, y);
+    Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+    double total = 0;
+    for (int ty = y << level; ty < (y + 1) << level; ++ty)
+      for (int tx = x << level; tx < (x + 1) << level; ++tx) {
+        const double weight = luminance(pyramid.power(0, tx, ty));
+        for_each_texel_piece(tx, ty, w, h, 8, [&](const Vec3& d) {
+          sum += weight * (d - centroid) * (d - centroid).transpose();
+          total += weight;
+        });
+      }
+    const Eigen::Matrix3d expected = sum / total, got = pyramid.spread(level, x, y);
+    // 2%: the pieces are points, and the texels flat rectangles in their tangent planes.
+    EXPECT_LT((got - expected).norm(), 0.02 * expected.norm()) << level << " " << x << " " << y;
+  }
+  EXPECT_LT((pyramid.spread(0, 5, 37) - EnvPyramid::texel_spread(5, 37, w, h)).norm(),
+            1e-6 * EnvPyramid::texel_spread(5, 37, w, h).norm());
 }
 
 }  // namespace

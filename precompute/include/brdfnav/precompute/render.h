@@ -26,7 +26,7 @@ namespace brdfnav {
 // formula). A database's settings record it, so that a resumed build or a merge of shards never
 // mixes the images of two renderers; Render.ImagesAreThoseOfThisRevision holds it to reference
 // values of a few images.
-inline constexpr int kRendererRevision = 2;
+inline constexpr int kRendererRevision = 3;
 
 // Knobs of the quadrature (docs/RENDERER.md). The defaults meet the accuracy target: the error is
 // at most a tenth of the change a 10% parameter step makes. finer(4) is the reference.
@@ -78,6 +78,14 @@ class Renderer {
   // specular() of each lobe, to the bit, in order. Lobes that shares_quadrature() are rendered
   // together, up to five in a pass that costs little more than one of them.
   std::vector<Image> specular(std::span<const Lobe> lobes);
+  // Ward lobes with rho_s = 1 at every pair of alpha_x[i] and alpha_y[j], as
+  // images[i * alpha_y.size() + j], integrated together over one set of nodes per pixel, fine
+  // enough for each lobe where it reaches (precompute/src/ward_grid.h): over the paper's 15 x 15
+  // grid, a small part of the time of specular() of each. The nodes depend on the smallest and
+  // largest alpha of each list, so an image differs from specular()'s, and from the same lobe's
+  // in another grid, within the accuracy target. std::invalid_argument for an empty list or an
+  // alpha that is not positive and finite.
+  std::vector<Image> ward_grid(std::span<const double> alpha_x, std::span<const double> alpha_y);
   // rho_d * diffuse() + rho_s * specular(lobe); validates the material (MaterialError).
   Image render(const Material& material);
 

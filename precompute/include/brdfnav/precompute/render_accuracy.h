@@ -8,6 +8,7 @@
 #include <brdfnav/core/material.h>
 #include <brdfnav/precompute/render.h>
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -43,5 +44,14 @@ RenderQuality reference_quality(const RenderQuality& quality);
 // renderers must share the environment, scene and resolution.
 std::vector<AccuracyResult> measure_accuracy(Renderer& renderer, Renderer& reference,
                                              const AccuracySetting& setting);
+// ... of images of the setting's lobe made otherwise (ward_grid_image()), against the same
+// reference images: one list of results per image.
+std::vector<std::vector<AccuracyResult>> measure_accuracy(std::span<const Image> images,
+                                                          Renderer& reference,
+                                                          const AccuracySetting& setting);
+
+// A Ward setting's lobe as the precompute renders it: in a grid of the alpha ranges of Ward's
+// table (Renderer::ward_grid), whose nodes are those of every profile's Ward grid.
+Image ward_grid_image(Renderer& renderer, const AccuracySetting& setting);
 
 }  // namespace brdfnav
