@@ -57,6 +57,8 @@ std::vector<std::vector<AccuracyResult>> measure_accuracy(std::span<const Image>
                                                           const AccuracySetting& setting) {
   const ModelInfo& info = model_info(setting.model);
   const Image reference_image = reference.specular(make_lobe(setting.model, setting.params));
+  std::vector<double> errors;
+  for (const Image& image : images) errors.push_back(image_distance(image, reference_image));
   std::vector<std::vector<AccuracyResult>> results(images.size());
   for (std::size_t d = 0; d < info.params.size(); ++d) {
     std::vector<double> stepped = setting.params;
@@ -65,8 +67,7 @@ std::vector<std::vector<AccuracyResult>> measure_accuracy(std::span<const Image>
     const double step =
         image_distance(reference_image, reference.specular(make_lobe(setting.model, stepped)));
     for (std::size_t k = 0; k < images.size(); ++k)
-      results[k].push_back(
-          {std::string(info.params[d].name), image_distance(images[k], reference_image), step});
+      results[k].push_back({std::string(info.params[d].name), errors[k], step});
   }
   return results;
 }
@@ -74,9 +75,12 @@ std::vector<std::vector<AccuracyResult>> measure_accuracy(std::span<const Image>
 Image ward_grid_image(Renderer& renderer, const AccuracySetting& setting) {
   if (setting.model != ModelId::ward) throw std::invalid_argument("ward_grid_image: not Ward");
   const ParamGrid grid(Ward::kParams);
-  const std::vector<double> x{grid.axis(0).front(), setting.params[0], grid.axis(0).back()};
-  const std::vector<double> y{grid.axis(1).front(), setting.params[1], grid.axis(1).back()};
-  return renderer.ward_grid(x, y)[4];  // (1, 1): the setting
+  std::vector<double> axes[2];
+  for (std::size_t d = 0; d < 2; ++d) {
+    const double alpha = setting.params[d];
+    axes[d] = {std::min(grid.axis(d).front(), alpha), alpha, std::max(grid.axis(d).back(), alpha)};
+  }
+  return renderer.ward_grid(axes[0], axes[1])[4];  // (1, 1): the setting
 }
 
 }  // namespace brdfnav

@@ -83,8 +83,8 @@ class Renderer {
   // enough for each lobe where it reaches (precompute/src/ward_grid.h): over the paper's 15 x 15
   // grid, a small part of the time of specular() of each. The nodes depend on the smallest and
   // largest alpha of each list, so an image differs from specular()'s, and from the same lobe's
-  // in another grid, within the accuracy target. std::invalid_argument for an empty list or an
-  // alpha that is not positive and finite.
+  // in another grid, within the accuracy target. std::invalid_argument for an empty list, an
+  // alpha that is not positive and finite, or a list that decreases.
   std::vector<Image> ward_grid(std::span<const double> alpha_x, std::span<const double> alpha_y);
   // rho_d * diffuse() + rho_s * specular(lobe); validates the material (MaterialError).
   Image render(const Material& material);

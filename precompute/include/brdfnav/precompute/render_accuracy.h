@@ -51,7 +51,8 @@ std::vector<std::vector<AccuracyResult>> measure_accuracy(std::span<const Image>
                                                           const AccuracySetting& setting);
 
 // A Ward setting's lobe as the precompute renders it: in a grid of the alpha ranges of Ward's
-// table (Renderer::ward_grid), whose nodes are those of every profile's Ward grid.
+// table (Renderer::ward_grid), whose nodes are those of every profile's Ward grid (widened to
+// the setting's alphas if they lie outside).
 Image ward_grid_image(Renderer& renderer, const AccuracySetting& setting);
 
 }  // namespace brdfnav
