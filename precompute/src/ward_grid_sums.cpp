@@ -16,6 +16,8 @@ namespace {
 // Exponents below this are this: exp(-50) = 2e-22 adds nothing, and products of two factors stay
 // clear of subnormal numbers, which are slow.
 constexpr double kMinExponent = -50;
+// Slopes squared and variances beyond this are this in single precision: their factors are 0.
+constexpr double kHuge = 1e30;
 // Factors below exp(-23) = 1e-10 are left out of the sums.
 constexpr double kNegligibleExponent = -23;
 
@@ -49,8 +51,9 @@ __attribute__((target("avx2,fma"))) void exponents_avx2(const Factors& f) {
   const __m256 one = _mm256_set1_ps(1.f), half = _mm256_set1_ps(0.5f);
   const __m256 three_halves = _mm256_set1_ps(1.5f), floor = _mm256_set1_ps(float(kMinExponent));
   for (int k = 0; k < f.nodes; ++k) {
-    const __m256 minus_s2 = _mm256_set1_ps(float(-f.slopes[k] * f.slopes[k]));
-    const __m256 v2 = _mm256_set1_ps(float(2 * f.variances[k]));
+    // Clamped into float's range (slopes grow without bound toward a grazing horizon).
+    const __m256 minus_s2 = _mm256_set1_ps(-float(std::min(f.slopes[k] * f.slopes[k], kHuge)));
+    const __m256 v2 = _mm256_set1_ps(float(std::min(2 * f.variances[k], kHuge)));
     double* exponent = f.out + std::size_t(k) * stride;
     double* spread = f.scratch + std::size_t(k) * stride;
     for (int i = 0; i < stride; i += 8) {
