@@ -25,16 +25,23 @@ struct BenchOptions {
   bool anisotropic = false;
 };
 
+// Mean wall-clock milliseconds per image of render(), called `repeats` times, each making
+// `images` images.
+template <typename Render>
+double ms_per_image(int repeats, double images, Render&& render) {
+  const auto start = std::chrono::steady_clock::now();
+  for (int r = 0; r < repeats; ++r) render();
+  const std::chrono::duration<double, std::milli> elapsed =
+      std::chrono::steady_clock::now() - start;
+  return elapsed.count() / (repeats * images);
+}
+
 // Mean wall-clock milliseconds of one specular image of the setting, without what the renderer
 // computes once for all images of the model (Renderer::prepare).
 double time_image(Renderer& renderer, const AccuracySetting& s, int repeats) {
   const Lobe lobe = make_lobe(s.model, s.params);
   renderer.prepare(lobe);
-  const auto start = std::chrono::steady_clock::now();
-  for (int r = 0; r < repeats; ++r) renderer.specular(lobe);
-  const std::chrono::duration<double, std::milli> elapsed =
-      std::chrono::steady_clock::now() - start;
-  return elapsed.count() / repeats;
+  return ms_per_image(repeats, 1, [&] { renderer.specular(lobe); });
 }
 
 // The precompute's He images along eta (He::kEtaNodes at each He setting's sigma and tau): ms
@@ -43,11 +50,7 @@ void eta_batch_rows(Renderer& renderer, int repeats) {
   std::printf("\n| he setting | ms per image, 5 etas alone | ... in one pass | ratio |\n");
   std::printf("|---|---|---|---|\n");
   auto ms_of = [&](auto&& render) {
-    const auto start = std::chrono::steady_clock::now();
-    for (int r = 0; r < repeats; ++r) render();
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-               .count() /
-           (repeats * double(He::kEtaNodes.size()));
+    return ms_per_image(repeats, double(He::kEtaNodes.size()), render);
   };
   for (const AccuracySetting& s : accuracy_settings()) {
     if (s.model != ModelId::he) continue;
@@ -68,11 +71,8 @@ void eta_batch_rows(Renderer& renderer, int repeats) {
 // (Renderer::ward_grid): ms per image.
 void ward_grid_rows(Renderer& renderer, int repeats) {
   const ParamGrid grid(Ward::kParams);
-  const auto start = std::chrono::steady_clock::now();
-  for (int r = 0; r < repeats; ++r) renderer.ward_grid(grid.axis(0), grid.axis(1));
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() /
-      (repeats * double(grid.node_count()));
+  const double ms = ms_per_image(repeats, double(grid.node_count()),
+                                 [&] { renderer.ward_grid(grid.axis(0), grid.axis(1)); });
   std::printf("\n| ward grid in one pass | ms per image |\n|---|---|\n| %zu x %zu | %.1f |\n",
               grid.axis(0).size(), grid.axis(1).size(), ms);
 }

@@ -42,12 +42,9 @@ void store_spread(std::vector<float>& spread, std::size_t node, const Eigen::Mat
 }  // namespace
 
 Eigen::Matrix3d EnvPyramid::texel_spread(int x, int y, int width, int height) {
-  const double theta = kPi * (y + 0.5) / height, phi = 2 * kPi * ((x + 0.5) / width - 0.5);
-  const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
-  const Vec3 e_theta(-ct * sp, -st, ct * cp), e_phi(-cp, 0, -sp);
-  const double d_theta = kPi / height, d_phi = 2 * kPi / width * st;
-  return (d_theta * d_theta / 12) * e_theta * e_theta.transpose() +
-         (d_phi * d_phi / 12) * e_phi * e_phi.transpose();
+  const TexelFrame t = texel_frame(x, y, width, height);
+  return (t.d_theta * t.d_theta / 12) * t.e_theta * t.e_theta.transpose() +
+         (t.d_phi * t.d_phi / 12) * t.e_phi * t.e_phi.transpose();
 }
 
 EnvPyramid::EnvPyramid(const EnvMap& env) {
@@ -149,7 +146,7 @@ EnvPyramid::Level EnvPyramid::half_of(const Level& fine) const {
       for (int fy = 2 * y; fy < std::min(2 * y + 2, fine.height); ++fy) {
         for (int fx = 2 * x; fx < std::min(2 * x + 2, fine.width); ++fx) {
           const std::size_t j = fine.index(fx, fy);
-          const Vec3 c(fine.centroid[j], fine.centroid[j + 1], fine.centroid[j + 2]);
+          const Vec3 c = fine.centroid_at(j);
           lit += fine.luminance[j / 3] * c;
           plain += c;
           power += rgb(fine.power, j);
@@ -166,8 +163,7 @@ EnvPyramid::Level EnvPyramid::half_of(const Level& fine) const {
         for (int fx = 2 * x; fx < std::min(2 * x + 2, fine.width); ++fx) {
           const std::size_t j = fine.index(fx, fy);
           const double weight = lit_up ? fine.luminance[j / 3] : 1.0;
-          const Vec3 offset =
-              Vec3(fine.centroid[j], fine.centroid[j + 1], fine.centroid[j + 2]) - centroid;
+          const Vec3 offset = fine.centroid_at(j) - centroid;
           spread += weight * (fine.spread_at(j) + offset * offset.transpose());
           total += weight;
         }

@@ -20,18 +20,29 @@ namespace brdfnav {
 // over a cell is its second derivatives times the cell's size squared over 24.
 inline constexpr double kSecondDifferenceFactor = 1.0 / 24;
 
+// Texel (x, y) of a map width x height, flat in its tangent plane: its centre, the unit tangents
+// of theta and phi there, and its extent along each.
+struct TexelFrame {
+  Vec3 centre, e_theta, e_phi;
+  double d_theta, d_phi;
+};
+inline TexelFrame texel_frame(int x, int y, int width, int height) {
+  const double theta = kPi * (y + 0.5) / height, phi = 2 * kPi * ((x + 0.5) / width - 0.5);
+  const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
+  return {Vec3(-st * sp, ct, st * cp), Vec3(-ct * sp, -st, ct * cp), Vec3(-cp, 0, -sp),
+          kPi / height, 2 * kPi / width * st};
+}
+
 // The directions of the n x n pieces of texel (x, y) of a map width x height, rows then columns,
 // each with an equal share of its solid angle: the texel's centre moved along the tangents of
 // theta and phi (exact to second order in the texel's size), f(direction) for each.
 template <typename F>
 void for_each_texel_piece(int x, int y, int width, int height, int n, F&& f) {
-  const double theta = kPi * (y + 0.5) / height, phi = 2 * kPi * ((x + 0.5) / width - 0.5);
-  const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
-  const Vec3 centre(-st * sp, ct, st * cp), e_theta(-ct * sp, -st, ct * cp), e_phi(-cp, 0, -sp);
-  const double d_theta = kPi / height / n, d_phi = 2 * kPi / width * st / n;
+  const TexelFrame t = texel_frame(x, y, width, height);
+  const double d_theta = t.d_theta / n, d_phi = t.d_phi / n;
   for (int j = 0; j < n; ++j) {
-    const Vec3 row = centre + ((j + 0.5) - 0.5 * n) * d_theta * e_theta;
-    for (int i = 0; i < n; ++i) f((row + ((i + 0.5) - 0.5 * n) * d_phi * e_phi).normalized());
+    const Vec3 row = t.centre + ((j + 0.5) - 0.5 * n) * d_theta * t.e_theta;
+    for (int i = 0; i < n; ++i) f((row + ((i + 0.5) - 0.5 * n) * d_phi * t.e_phi).normalized());
   }
 }
 
@@ -57,8 +68,7 @@ class EnvPyramid {
   EnvNode node(int level, int x, int y) const {
     const Level& l = levels_[level];
     const std::size_t i = l.index(x, y);
-    return {Vec3(l.centroid[i], l.centroid[i + 1], l.centroid[i + 2]), rgb(l.power, i),
-            rgb(l.weight, i)};
+    return {l.centroid_at(i), rgb(l.power, i), rgb(l.weight, i)};
   }
   // The luminance-weighted covariance of the directions within a node about its centroid
   // (world): how its power is spread, to second order. A texel's is its own extent's.
@@ -70,8 +80,7 @@ class EnvPyramid {
   static Eigen::Matrix3d texel_spread(int x, int y, int width, int height);
   Vec3 centroid(int level, int x, int y) const {
     const Level& l = levels_[level];
-    const std::size_t i = l.index(x, y);
-    return Vec3(l.centroid[i], l.centroid[i + 1], l.centroid[i + 2]);
+    return l.centroid_at(l.index(x, y));
   }
   Rgb power(int level, int x, int y) const {
     const Level& l = levels_[level];
@@ -109,6 +118,9 @@ class EnvPyramid {
     std::vector<float> centroid, power, weight, spread;
     std::vector<double> luminance;  // of the node's power, while building
     std::size_t index(int x, int y) const { return 3 * (static_cast<std::size_t>(y) * width + x); }
+    Vec3 centroid_at(std::size_t i) const {
+      return Vec3(centroid[i], centroid[i + 1], centroid[i + 2]);
+    }
     Eigen::Matrix3d spread_at(std::size_t i) const {
       const float* s = &spread[2 * i];
       Eigen::Matrix3d m;

@@ -47,25 +47,21 @@ WardGridQuadrature::WardGridQuadrature(const EnvPyramid& env, std::span<const do
     : env_(env),
       alpha_x_(alpha_x.begin(), alpha_x.end()),
       alpha_y_(alpha_y.begin(), alpha_y.end()) {
-  for (const std::vector<double>* axis : {&alpha_x_, &alpha_y_}) {
-    if (axis->empty()) throw std::invalid_argument("Ward grid: an alpha axis is empty");
-    for (double a : *axis)
-      if (!(a > 0) || !std::isfinite(a))
-        throw std::invalid_argument("Ward grid: alpha must be positive and finite");
-  }
-  min_x_ = *std::min_element(alpha_x_.begin(), alpha_x_.end());
-  max_x_ = *std::max_element(alpha_x_.begin(), alpha_x_.end());
-  min_y_ = *std::min_element(alpha_y_.begin(), alpha_y_.end());
-  max_y_ = *std::max_element(alpha_y_.begin(), alpha_y_.end());
-  inv_max_x_ = 1 / max_x_, inv_max_y_ = 1 / max_y_;
   for (auto [alphas, inverse] :
        {std::pair{&alpha_x_, &inv_alpha2_x_}, {&alpha_y_, &inv_alpha2_y_}}) {
+    if (alphas->empty()) throw std::invalid_argument("Ward grid: an alpha axis is empty");
+    for (double a : *alphas)
+      if (!(a > 0) || !std::isfinite(a))
+        throw std::invalid_argument("Ward grid: alpha must be positive and finite");
     if (!std::is_sorted(alphas->begin(), alphas->end()))
       throw std::invalid_argument("Ward grid: the alphas must not decrease");
     inverse->assign(std::size_t(ward_grid::padded(int(alphas->size()))), 0.f);
     for (std::size_t i = 0; i < alphas->size(); ++i)
       (*inverse)[i] = static_cast<float>(1 / ((*alphas)[i] * (*alphas)[i]));
   }
+  min_x_ = alpha_x_.front(), max_x_ = alpha_x_.back();
+  min_y_ = alpha_y_.front(), max_y_ = alpha_y_.back();
+  inv_max_x_ = 1 / max_x_, inv_max_y_ = 1 / max_y_;
   // Per slope deviation (alpha / sqrt(2)) as RenderQuality counts them, per alpha here.
   node_steps_ = quality.texels_per_width * std::sqrt(2.0) / kSpreadRelief;
   hot_steps_ = quality.hot_texels_per_width * std::sqrt(2.0) / kSpreadRelief;

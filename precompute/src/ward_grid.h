@@ -9,15 +9,15 @@
 // over the environment's nodes of power * K is one product of per-node factors,
 //   sum_n power_n sqrt(cos_i,n) gx_n(alpha_x[i]) gy_n(alpha_y[j]),
 // over one set of nodes per pixel fine enough for every lobe of the grid where that lobe reaches:
-// a node is cut until its extent in slopes is at most 2 / texels_per_width of the slope deviation
+// a node is cut until its extent in slopes is at most 2.5 / texels_per_width of the slope deviation
 // (alpha / sqrt(2)) of the narrowest lobe of the grid whose window (`reach` deviations) holds it.
 // Near the lobes' peak that is the narrowest alpha; far out along one slope axis, only the alphas
 // wide enough to reach there: the nodes grow with their distance from the peak. Each node's
 // factors are the Gaussians averaged over its slopes, taken as Gaussian too, with the variances
 // that the luminance-weighted spread of the node's directions (EnvPyramid::spread) gives them:
 // exact to second order in the node's size, and keeping each node's integral, which lets the nodes
-// be twice as wide as the per-lobe quadrature's (quadrature.h). The hot texels (lamps) are cut by
-// the same rule with hot_texels_per_width within twice the window, and kept whole out to four
+// be 2.5 times as wide as the per-lobe quadrature's (quadrature.h). The hot texels (lamps) are cut
+// by the same rule with hot_texels_per_width within twice the window, and kept whole out to four
 // times it.
 //
 // Nothing is random and the order of every sum is fixed: deterministic for the same inputs. The
@@ -44,12 +44,12 @@ struct WardGridScratch {
   std::vector<double> gx, gy;                 // a chunk of nodes' Gaussian factors
   std::vector<double> scratch;                // ... while they are computed
   std::vector<int> first;                     // ... and their first that is not negligible
-  std::vector<double> sums;                   // 3 nx x ny
+  std::vector<double> sums;                   // 3 nx x padded(ny) (ward_grid_sums.h)
 };
 
 class WardGridQuadrature {
  public:
-  // Each alpha list not empty, positive and finite (std::invalid_argument).
+  // Each alpha list not empty, positive, finite and not decreasing (std::invalid_argument).
   WardGridQuadrature(const EnvPyramid& env, std::span<const double> alpha_x,
                      std::span<const double> alpha_y, const RenderQuality& quality);
 
@@ -63,9 +63,6 @@ class WardGridQuadrature {
   void integrate(const Frame& frame, const Vec3& wo,
                  const std::function<bool(const Vec3&)>& visible, WardGridScratch& scratch,
                  double* out) const;
-
-  // How many nodes the last integrate() with this scratch summed.
-  static std::size_t node_count(const WardGridScratch& scratch) { return scratch.sx.size(); }
 
  private:
   class Pixel;
