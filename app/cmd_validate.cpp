@@ -6,6 +6,7 @@
 
 #include <brdfnav/core/atomic_file.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -23,6 +24,7 @@ const std::string kStudioLights = "/usr/share/blender/datafiles/studiolights/wor
 
 struct ValidateOptions {
   std::string db;
+  std::string reference = kDefaultEnvPath;  // without --db
   std::vector<std::string> envs{kStudioLights + "forest.exr", kStudioLights + "courtyard.exr"};
   int resolution = 128;
   int pairs = 50;
@@ -70,56 +72,110 @@ Material lafortune_sample(double cz) {
   return m;
 }
 
-// Everything the studies read, loaded before any rendering (and before the output directory is
-// made) so that a bad input fails at once and leaves nothing behind.
-struct Inputs {
-  EnvMap reference = EnvMap::load(kDefaultEnvPath);
-  std::vector<EnvMap> others;
-  std::optional<Database> db;
-  std::optional<EnvMap> db_env;
-  std::optional<Scene> db_scene;
-  Scene sphere = Scene::sphere();
+// The name Figure 3 gives its constant environment.
+const std::string kUniform = "uniform";
 
-  explicit Inputs(const ValidateOptions& o) {
-    for (const std::string& path : o.envs) others.push_back(EnvMap::load(path));
-    if (o.db.empty()) return;
-    db = Database::open(o.db);
-    db_env = EnvMap::load(db->manifest().env_path);
-    SceneOptions scene;
-    scene.scene = db->manifest().scene;
-    db_scene = load_scene(scene);
+// Short names for the maps (file stems), unique among themselves and Figure 3's own entries
+// (the constant environment, the BRDF-space metric): a name already taken gets a suffix.
+std::vector<std::string> map_names(const std::vector<std::string>& paths) {
+  std::vector<std::string> taken{kUniform, kBrdfL2Entry}, names;
+  for (const std::string& path : paths) {
+    const std::string stem = fs::path(path).stem().string();
+    std::string name = stem;
+    for (int n = 2; std::find(taken.begin(), taken.end(), name) != taken.end(); ++n)
+      name = stem + "-" + std::to_string(n);
+    taken.push_back(name);
+    names.push_back(name);
+  }
+  return names;
+}
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return fs::equivalent(a, b, ec) && !ec;
+}
+
+// Everything the studies read, loaded before any rendering (and before the output directory is
+// made) so that a bad input fails at once and leaves nothing behind. With a database, its own
+// map and scene are the reference: the report then speaks of the metric that database embodies.
+struct Inputs {
+  std::optional<Database> db;
+  std::string reference_path;
+  EnvMap reference;
+  Scene scene;
+  std::vector<std::string> other_paths;  // --env without the reference map itself
+  std::vector<EnvMap> others;
+
+  explicit Inputs(const ValidateOptions& o)
+      : db(o.db.empty() ? std::nullopt : std::optional<Database>(Database::open(o.db))),
+        reference_path(db ? db->manifest().env_path : o.reference),
+        reference(db ? load_database_env(*db) : EnvMap::load(reference_path)),
+        scene(db ? load_scene({.scene = db->manifest().scene}) : Scene::sphere()) {
+    for (const std::string& path : o.envs) {
+      if (same_file(path, reference_path)) {
+        std::fprintf(stderr,
+                     "brdfnav: validate: note: %s is the reference map; left out of --env\n",
+                     path.c_str());
+        continue;
+      }
+      other_paths.push_back(path);
+      others.push_back(EnvMap::load(path));
+    }
   }
 };
 
+// Figure 2 under every other map: how much the curve's shape owes to the environment.
+std::vector<NamedPellacini> run_fig2_others(const std::vector<NamedRenderer>& others) {
+  std::vector<NamedPellacini> studies;
+  for (const NamedRenderer& r : others) studies.push_back({r.name, pellacini_study(*r.renderer)});
+  return studies;
+}
+
 // Figure 3's renderers: the reference, every other map and a constant environment, which shows
 // no highlight shapes (the paper expects it to fail).
-SceneStudy run_fig3(const Inputs& in, Renderer& reference, int resolution) {
+SceneStudy run_fig3(const Inputs& in, std::vector<NamedRenderer> named, int resolution) {
   constexpr int kUniformHeight = 32;
   const EnvMap uniform(2 * kUniformHeight, kUniformHeight,
-                       std::vector<float>(6 * kUniformHeight * kUniformHeight, 1.0f), "uniform");
-  std::vector<const EnvMap*> envs;
-  for (const EnvMap& e : in.others) envs.push_back(&e);
-  envs.push_back(&uniform);
-  std::vector<std::unique_ptr<Renderer>> renderers;
-  std::vector<NamedRenderer> named{{fs::path(kDefaultEnvPath).stem().string(), &reference}};
-  for (const EnvMap* env : envs) {
-    renderers.push_back(std::make_unique<Renderer>(*env, in.sphere, resolution));
-    named.push_back({fs::path(env->source()).stem().string(), renderers.back().get()});
-  }
+                       std::vector<float>(6 * kUniformHeight * kUniformHeight, 1.0f), kUniform);
+  Renderer constant(uniform, in.scene, resolution);
+  named.push_back({kUniform, &constant});
   return scene_study(named);
 }
+
+// One renderer per map, the reference first, each named (map_names).
+struct MapRenderers {
+  std::vector<std::unique_ptr<Renderer>> owned;
+  std::vector<NamedRenderer> named;
+
+  MapRenderers(const Inputs& in, int resolution) {
+    std::vector<const EnvMap*> maps{&in.reference};
+    std::vector<std::string> paths{in.reference_path};
+    for (std::size_t i = 0; i < in.others.size(); ++i)
+      maps.push_back(&in.others[i]), paths.push_back(in.other_paths[i]);
+    const std::vector<std::string> names = map_names(paths);
+    for (std::size_t i = 0; i < maps.size(); ++i) {
+      owned.push_back(std::make_unique<Renderer>(*maps[i], in.scene, resolution));
+      named.push_back({names[i], owned.back().get()});
+    }
+  }
+};
 
 ValidationResults run(const ValidateOptions& o) {
   const Inputs in(o);
   check_writable(o.out);
   ValidationResults r;
   r.resolution = o.resolution;
-  r.reference_env = kDefaultEnvPath;
-  r.other_envs = o.envs;
+  r.reference_env = in.reference_path;
+  r.scene = in.db ? in.db->manifest().scene : "sphere";
+  r.other_envs = in.other_paths;
   r.database = o.db;
-  Renderer main(in.reference, in.sphere, o.resolution);
+  const MapRenderers maps(in, o.resolution);
+  Renderer& main = *maps.named.front().renderer;
   r.fig2 = timed("figure 2", [&] { return pellacini_study(main); });
-  r.fig3 = timed("figure 3", [&] { return run_fig3(in, main, o.resolution); });
+  r.fig2_others = timed("figure 2, other maps", [&] {
+    return run_fig2_others({maps.named.begin() + 1, maps.named.end()});
+  });
+  r.fig3 = timed("figure 3", [&] { return run_fig3(in, maps.named, o.resolution); });
   constexpr int kRow = 8;
   r.fig8 = timed("figure 8", [&] {
     return spacing_study(main, ward_sample, log_grid(0.01, 0.37, 32), Baseline::brdf_l2, kRow);
@@ -129,7 +185,7 @@ ValidationResults run(const ValidateOptions& o) {
                          kRow);
   });
   if (in.db) {
-    Renderer exact(*in.db_env, *in.db_scene, in.db->manifest().resolution);
+    Renderer exact(in.reference, in.scene, in.db->manifest().resolution);
     r.embedding = timed("embedding", [&] { return embedding_study(*in.db, exact, o.pairs); });
     r.fits = timed("fits", [&] { return fit_study(*in.db, o.fit_samples); });
   }
@@ -142,8 +198,15 @@ void add_validate_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "validate", "Reproduce the paper's metric evaluation (Figures 2, 3, 8, 9) as a report");
   auto o = std::make_shared<ValidateOptions>();
-  cmd->add_option("--db", o->db, "Database whose embedding to evaluate (optional)");
-  cmd->add_option("--env", o->envs, "Environment maps compared with interior.exr (comma-separated)")
+  auto* db = cmd->add_option(
+      "--db", o->db,
+      "Database whose embedding to evaluate (optional); its map and scene become the reference");
+  cmd->add_option("--reference", o->reference,
+                  "Reference environment map (the metric's), without --db")
+      ->capture_default_str()
+      ->excludes(db);
+  cmd->add_option("--env", o->envs,
+                  "Environment maps compared with the reference (comma-separated)")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--res", o->resolution, "Image width and height in pixels")

@@ -30,23 +30,42 @@ struct Writer {
   }
 };
 
-// Figure 2: every curve scaled onto the straight line the subjects' ratings follow (0 at d = 0.8,
-// 1 at d = 0.99), so that only their shapes differ.
-void plot_fig2(Writer& w, const PellaciniStudy& s) {
-  std::vector<double> linear;
-  for (double d : s.d) linear.push_back((d - s.d.front()) / (s.d.back() - s.d.front()));
+// The straight line the subjects' ratings follow, 0 at d = 0.8 and 1 at d = 0.99.
+std::vector<double> pellacini_line(const std::vector<double>& d) {
+  std::vector<double> line;
+  for (double v : d) line.push_back((v - d.front()) / (d.back() - d.front()));
+  return line;
+}
+
+// A cumulative curve scaled onto that line (least squares), so that only its shape shows.
+PlotSeries scaled_curve(const std::string& label, const std::vector<double>& d,
+                        const CumulativeCurve& c, std::size_t colour) {
+  PlotSeries p{label + " (R^2 " + fixed(c.fit.r2, 3) + ")", d, {}, plot_colour(colour), true};
+  const double scale = least_squares_scale(c.values, pellacini_line(d));
+  for (double v : c.values) p.y.push_back(scale * v);
+  return p;
+}
+
+// Figure 2: every metric's curve under the reference map; then the cube root under every map.
+void plot_fig2(Writer& w, const PellaciniStudy& s, const std::string& reference,
+               const std::vector<NamedPellacini>& others) {
+  const PlotSeries line{"linear in d (Pellacini)", s.d, pellacini_line(s.d), {0.f, 0.f, 0.f}};
+  const char* x_label = "d = 1 - alpha (distinctness of image)";
+  const char* y_label = "cumulative distance, least-squares scaled";
   std::vector<PlotSeries> series;
-  for (std::size_t k = 0; k < s.curves.size(); ++k) {
-    const CumulativeCurve& c = s.curves[k];
-    PlotSeries p{c.metric + " (R^2 " + fixed(c.fit.r2, 3) + ")", s.d, {}, plot_colour(k), true};
-    const double scale = least_squares_scale(c.values, linear);
-    for (double v : c.values) p.y.push_back(scale * v);
-    series.push_back(std::move(p));
-  }
-  series.push_back({"linear in d (Pellacini)", s.d, linear, {0.f, 0.f, 0.f}});
+  for (std::size_t k = 0; k < s.curves.size(); ++k)
+    series.push_back(scaled_curve(s.curves[k].metric, s.d, s.curves[k], k));
+  series.push_back(line);
   w.plot("figure2", "fig2_cumulative.png",
-         {"Fig. 2: cumulative distance along Pellacini's 11 Ward stimuli",
-          "d = 1 - alpha (distinctness of image)", "cumulative distance, least-squares scaled"},
+         {"Fig. 2: cumulative distance along Pellacini's 11 Ward stimuli", x_label, y_label},
+         series);
+  if (others.empty()) return;
+  series = {scaled_curve(reference, s.d, s.curves[0], 0)};
+  for (const NamedPellacini& o : others)
+    series.push_back(scaled_curve(o.env, s.d, o.study.curves[0], series.size()));
+  series.push_back(line);
+  w.plot("figure2", "fig2_environments.png",
+         {"Fig. 2 under each map: the cube-root metric's cumulative distance", x_label, y_label},
          series);
 }
 
@@ -129,7 +148,7 @@ std::vector<ReportFile> write_report_plots(const std::filesystem::path& dir,
                                            const ValidationResults& r,
                                            const ocio::ColorPipeline& colour) {
   Writer w{dir, {}};
-  plot_fig2(w, r.fig2);
+  plot_fig2(w, r.fig2, r.fig3.entries.front().name, r.fig2_others);
   plot_fig3(w, r.fig3);
   plot_spacing(w, "figure8", "Ward", kFig8Parameter, 3, r.fig8, colour);
   plot_spacing(w, "figure9", "Lafortune n=800", kFig9Parameter, 4, r.fig9, colour);

@@ -33,9 +33,15 @@ YAML::Emitter& seq(YAML::Emitter& out, const std::vector<double>& values) {
   return out << YAML::EndSeq;
 }
 
-void emit_fig2(YAML::Emitter& out, const PellaciniStudy& s) {
-  out << YAML::Key << "figure2" << YAML::Value << YAML::BeginMap << YAML::Key << "d";
-  seq(out << YAML::Value, s.d);
+// How much the last step (to the most mirror-like stimulus) outweighs the mean step: 1 on a line.
+double last_step_ratio(const CumulativeCurve& c) {
+  const std::size_t n = c.values.size();
+  const double mean_step = c.values.back() / double(n - 1);
+  return mean_step > 0 ? (c.values[n - 1] - c.values[n - 2]) / mean_step : 0;
+}
+
+// One map's curves: the keys figure2 has for the reference and for each other map.
+void emit_pellacini(YAML::Emitter& out, const PellaciniStudy& s) {
   out << YAML::Key << "white_y" << YAML::Value << s.white_y;
   out << YAML::Key << "metrics" << YAML::Value << YAML::BeginMap;
   for (const CumulativeCurve& c : s.curves) {
@@ -43,9 +49,23 @@ void emit_fig2(YAML::Emitter& out, const PellaciniStudy& s) {
     seq(out << YAML::Value, c.values);
     out << YAML::Key << "slope" << YAML::Value << c.fit.slope << YAML::Key << "intercept"
         << YAML::Value << c.fit.intercept << YAML::Key << "r2" << YAML::Value << c.fit.r2
-        << YAML::EndMap;
+        << YAML::Key << "last_step_ratio" << YAML::Value << last_step_ratio(c) << YAML::EndMap;
   }
-  out << YAML::EndMap << YAML::Key << "goal_holds" << YAML::Value << fig2_goal(s) << YAML::EndMap;
+  out << YAML::EndMap << YAML::Key << "goal_holds" << YAML::Value << fig2_goal(s);
+}
+
+void emit_fig2(YAML::Emitter& out, const PellaciniStudy& s,
+               const std::vector<NamedPellacini>& others) {
+  out << YAML::Key << "figure2" << YAML::Value << YAML::BeginMap << YAML::Key << "d";
+  seq(out << YAML::Value, s.d);
+  emit_pellacini(out, s);
+  out << YAML::Key << "other_envs" << YAML::Value << YAML::BeginMap;
+  for (const NamedPellacini& o : others) {
+    out << YAML::Key << o.env << YAML::Value << YAML::BeginMap;
+    emit_pellacini(out, o.study);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap << YAML::EndMap;
 }
 
 void emit_fig3(YAML::Emitter& out, const SceneStudy& s, std::size_t others) {
@@ -65,7 +85,12 @@ void emit_fig3(YAML::Emitter& out, const SceneStudy& s, std::size_t others) {
     }
     out << YAML::EndSeq << YAML::EndMap;
   }
-  out << YAML::EndMap << YAML::Key << "natural_maps_agree" << YAML::Value << fig3_claim(s, others)
+  out << YAML::EndMap << YAML::Key << "within_matrix" << YAML::Value << YAML::BeginSeq;
+  for (Eigen::Index i = 0; i < s.within.rows(); ++i) {
+    const Eigen::VectorXd row = s.within.row(i);  // rows: reference; columns: compared
+    seq(out, {row.data(), row.data() + row.size()});
+  }
+  out << YAML::EndSeq << YAML::Key << "natural_maps_agree" << YAML::Value << fig3_claim(s, others)
       << YAML::EndMap;
 }
 
@@ -146,13 +171,32 @@ void md_fig2(std::ostringstream& md, const PellaciniStudy& s) {
      << "Isotropic Ward, rho_d = rho_s = 0.1, 11 stimuli d = 1 - alpha = " << list(s.d, 3)
      << ". Cumulative distance between successive stimuli, fitted by a line in d. CIELAB white: "
         "Y = "
-     << num(s.white_y, 4) << " (mean luminance of the white Lambertian sphere).\n\n"
-     << "| metric | R^2 | slope | total |\n|---|---|---|---|\n";
+     << num(s.white_y, 4)
+     << " (mean luminance of the white Lambertian sphere). The last step is the one to the most "
+        "mirror-like stimulus, as a multiple of the mean step (1 on a line).\n\n"
+     << "| metric | R^2 | slope | total | last step / mean step |\n|---|---|---|---|---|\n";
   for (const CumulativeCurve& c : s.curves)
     md << "| " << c.metric << " | " << num(c.fit.r2, 4) << " | " << num(c.fit.slope, 4) << " | "
-       << num(c.values.back(), 4) << " |\n";
+       << num(c.values.back(), 4) << " | " << num(last_step_ratio(c), 2) << " |\n";
   md << "\nGoal R^2(cube_root) >= " << kGoalR2
      << " and R^2(cube_root) > R^2(rgb): " << verdict(fig2_goal(s)) << ".\n\n";
+}
+
+// The same stimuli under every other map: R^2 of each image metric and the goal.
+void md_fig2_others(std::ostringstream& md, const std::string& reference, const PellaciniStudy& s,
+                    const std::vector<NamedPellacini>& others) {
+  if (others.empty()) return;
+  md << "The same stimuli under the other maps:\n\n"
+     << "| map | R^2 cube_root | R^2 cielab | R^2 rgb | last step / mean step (cube_root) | goal "
+        "|\n|---|---|---|---|---|---|\n";
+  const auto row = [&md](const std::string& name, const PellaciniStudy& p) {
+    md << "| " << name << " | " << num(p.curves[0].fit.r2, 3) << " | " << num(p.curves[1].fit.r2, 3)
+       << " | " << num(p.curves[2].fit.r2, 3) << " | " << num(last_step_ratio(p.curves[0]), 2)
+       << " | " << verdict(fig2_goal(p)) << " |\n";
+  };
+  row(reference + " (reference)", s);
+  for (const NamedPellacini& o : others) row(o.env, o.study);
+  md << "\n";
 }
 
 void md_fig3(std::ostringstream& md, const SceneStudy& s, std::size_t others) {
@@ -169,6 +213,20 @@ void md_fig3(std::ostringstream& md, const SceneStudy& s, std::size_t others) {
      << "% for the other natural maps: " << verdict(fig3_claim(s, others))
      << ". The plot shows the distances from alpha = " << num(s.alpha[s.reference_sample], 4)
      << ".\n\n";
+  md << "Pairs within " << num(100 * s.tolerance, 0)
+     << "% between every two: each row's distances are the reference, each column's are scaled "
+        "onto them.\n\n| reference \\ compared |";
+  for (const SceneEntry& e : s.entries) md << " " << e.name << " |";
+  md << "\n|---|";
+  for (std::size_t j = 0; j < s.entries.size(); ++j) md << "---|";
+  md << "\n";
+  for (std::size_t i = 0; i < s.entries.size(); ++i) {
+    md << "| " << s.entries[i].name << " |";
+    for (std::size_t j = 0; j < s.entries.size(); ++j)
+      md << " " << num(100 * s.within(Eigen::Index(i), Eigen::Index(j)), 0) << "% |";
+    md << "\n";
+  }
+  md << "\n";
 }
 
 void md_spacing(std::ostringstream& md, const std::string& title, const char* parameter,
@@ -227,10 +285,11 @@ std::string report_yaml(const ValidationResults& r, const std::vector<ReportFile
   out << YAML::BeginMap << YAML::Key << "brdfnav_validation" << YAML::Value << 1;
   out << YAML::Key << "settings" << YAML::Value << YAML::BeginMap << YAML::Key << "resolution"
       << YAML::Value << r.resolution << YAML::Key << "reference_env" << YAML::Value
-      << r.reference_env << YAML::Key << "envs" << YAML::Value << YAML::Flow << r.other_envs;
+      << r.reference_env << YAML::Key << "scene" << YAML::Value << r.scene << YAML::Key << "envs"
+      << YAML::Value << YAML::Flow << r.other_envs;
   if (!r.database.empty()) out << YAML::Key << "database" << YAML::Value << r.database;
   out << YAML::EndMap;
-  emit_fig2(out, r.fig2);
+  emit_fig2(out, r.fig2, r.fig2_others);
   emit_fig3(out, r.fig3, r.other_envs.size());
   emit_spacing(out, "figure8", kFig8Parameter, r.fig8);
   emit_spacing(out, "figure9", kFig9Parameter, r.fig9);
@@ -248,10 +307,12 @@ std::string report_yaml(const ValidationResults& r, const std::vector<ReportFile
 std::string report_markdown(const ValidationResults& r, const std::vector<ReportFile>& files) {
   std::ostringstream md;
   md << "# brdfnav validation report\n\nResolution " << r.resolution << " x " << r.resolution
-     << ", sphere, reference environment `" << r.reference_env << "`; compared with";
+     << ", scene " << r.scene << ", reference environment `" << r.reference_env
+     << "`; compared with";
   for (const std::string& env : r.other_envs) md << " `" << env << "`";
   md << " and a constant environment. Every number is in report.yaml.\n\n";
   md_fig2(md, r.fig2);
+  md_fig2_others(md, r.fig3.entries.front().name, r.fig2, r.fig2_others);
   md << images(files, "figure2");
   md_fig3(md, r.fig3, r.other_envs.size());
   md << images(files, "figure3");

@@ -14,12 +14,20 @@
 
 namespace brdfnav::cli {
 
+// Figure 2 under one environment map, named by the map's file stem.
+struct NamedPellacini {
+  std::string env;
+  PellaciniStudy study;
+};
+
 struct ValidationResults {
   int resolution = 0;
   std::string reference_env;
+  std::string scene;  // "sphere" or the database's mesh
   std::vector<std::string> other_envs;
-  std::string database;  // empty without --db
-  PellaciniStudy fig2;
+  std::string database;                     // empty without --db
+  PellaciniStudy fig2;                      // under the reference map
+  std::vector<NamedPellacini> fig2_others;  // under each of other_envs, in order
   SceneStudy fig3;
   SpacingStudy fig8, fig9;  // Ward's alpha; Lafortune's cz at n = 800
   std::optional<EmbeddingStudy> embedding;

@@ -138,4 +138,14 @@ fs::path Database::diffuse_path() const {
   return dir_ / db::kDiffuseFile;
 }
 
+EnvMap load_database_env(const Database& db) {
+  const Manifest& m = db.manifest();
+  EnvMap env = EnvMap::load(m.env_path, {.sanitize = true});
+  if (env.pixel_hash() != m.env_hash)
+    throw DatabaseError(m.env_path + ": changed since the database was built (pixel sha1 " +
+                        env.pixel_hash() + ", " + (db.dir() / db::kManifestFile).string() +
+                        " says " + m.env_hash + ")");
+  return env;
+}
+
 }  // namespace brdfnav

@@ -326,9 +326,16 @@ SceneStudy scene_study(const std::vector<NamedRenderer>& renderers) {
   }
   for (const NamedRenderer& r : renderers)
     study.entries.push_back({r.name, image_distances(*r.renderer, samples), {}});
-  study.entries.push_back({"brdf_l2", brdf_distances(samples), {}});
+  study.entries.push_back({kBrdfL2Entry, brdf_distances(samples), {}});
   for (SceneEntry& e : study.entries)
     e.agreement = compare_distances(study.entries.front().distances, e.distances, study.tolerance);
+  const auto n = Eigen::Index(study.entries.size());
+  study.within.resize(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j)
+      study.within(i, j) =
+          compare_distances(study.entries[i].distances, study.entries[j].distances, study.tolerance)
+              .within;
   return study;
 }
 

@@ -17,6 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+const std::string kWorld = "/usr/share/blender/datafiles/studiolights/world/";
+
 fs::path scratch(const std::string& name) {
   const fs::path dir =
       fs::temp_directory_path() / ("brdfnav_cli_validate_" + std::to_string(::getpid()) + name);
@@ -38,20 +40,38 @@ void expect_sequence(const YAML::Node& node, std::size_t size, const std::string
   EXPECT_EQ(node.size(), size) << what;
 }
 
-void check_fig2(const YAML::Node& f) {
-  expect_sequence(f["d"], 11, "figure2.d");
-  EXPECT_GT(f["white_y"].as<double>(), 0);
+// One map's Figure 2 curves (the reference's, or another map's under figure2.other_envs).
+void check_pellacini(const YAML::Node& f, const std::string& map) {
+  EXPECT_GT(f["white_y"].as<double>(), 0) << map;
   for (const char* m : {"cube_root", "cielab", "rgb", "brdf_l2"}) {
     const YAML::Node c = f["metrics"][m];
-    ASSERT_TRUE(c.IsMap()) << m;
+    ASSERT_TRUE(c.IsMap()) << map << m;
     expect_sequence(c["cumulative"], 11, m);
     for (std::size_t i = 1; i < 11; ++i)
       EXPECT_GT(c["cumulative"][i].as<double>(), c["cumulative"][i - 1].as<double>()) << m;
     for (const char* k : {"slope", "intercept", "r2"}) EXPECT_TRUE(c[k].IsScalar()) << m << k;
+    // The last step against the mean step, from the cumulative values the report gives.
+    const double total = c["cumulative"][10].as<double>();
+    EXPECT_NEAR(c["last_step_ratio"].as<double>(),
+                (total - c["cumulative"][9].as<double>()) / (total / 10), 1e-4)
+        << map << m;
   }
-  EXPECT_TRUE(f["goal_holds"].IsScalar());
-  // Holds at 24 x 24 already: the cube root straightens the curve compared with plain RGB.
-  EXPECT_GT(f["metrics"]["cube_root"]["r2"].as<double>(), f["metrics"]["rgb"]["r2"].as<double>());
+  EXPECT_TRUE(f["goal_holds"].IsScalar()) << map;
+  // Holds at 24 x 24 already, under each map: the cube root straightens the curve compared with
+  // plain RGB.
+  EXPECT_GT(f["metrics"]["cube_root"]["r2"].as<double>(), f["metrics"]["rgb"]["r2"].as<double>())
+      << map;
+}
+
+void check_fig2(const YAML::Node& f) {
+  expect_sequence(f["d"], 11, "figure2.d");
+  check_pellacini(f, "interior");
+  ASSERT_TRUE(f["other_envs"].IsMap());
+  EXPECT_EQ(f["other_envs"].size(), 2u);
+  for (const char* map : {"forest", "courtyard"}) check_pellacini(f["other_envs"][map], map);
+  // The stimuli are the same under every map, so the BRDF-space curve is too.
+  EXPECT_EQ(f["other_envs"]["forest"]["metrics"]["brdf_l2"]["r2"].as<double>(),
+            f["metrics"]["brdf_l2"]["r2"].as<double>());
 }
 
 void check_fig3(const YAML::Node& f) {
@@ -70,6 +90,15 @@ void check_fig3(const YAML::Node& f) {
     within[m] = e["within"].as<double>();
   }
   EXPECT_EQ(within["interior"], 1.0);
+  // Every entry against every other: rows are references, row 0 the interior's agreements.
+  const YAML::Node matrix = f["within_matrix"];
+  expect_sequence(matrix, 5, "within_matrix");
+  std::size_t j = 0;
+  for (const auto& entry : f["metrics"]) {
+    expect_sequence(matrix[j], 5, "within_matrix row");
+    EXPECT_EQ(matrix[j][j].as<double>(), 1.0) << "each entry agrees with itself";
+    EXPECT_EQ(matrix[0][j++].as<double>(), entry.second["within"].as<double>());
+  }
   EXPECT_TRUE(f["natural_maps_agree"].IsScalar());
   // The constant environment and the BRDF-space metric agree less than any natural map.
   for (const char* natural : {"forest", "courtyard"})
@@ -127,6 +156,9 @@ void check_plots(const fs::path& dir, const YAML::Node& plots) {
   }
   EXPECT_EQ(figures,
             (std::set<std::string>{"figure2", "figure3", "figure8", "figure9", "embedding"}));
+  std::set<std::string> files;
+  for (const YAML::Node& p : plots) files.insert(p["file"].as<std::string>());
+  EXPECT_TRUE(files.count("fig2_environments.png")) << "Figure 2 under every map";
 }
 
 // One run with a tiny database, checked as a whole: the studies are the slow part.
@@ -147,12 +179,66 @@ TEST(CliValidate, WritesEveryFigureAtSmallScale) {
   const YAML::Node report = YAML::LoadFile((out / "report.yaml").string());
   EXPECT_EQ(report["brdfnav_validation"].as<int>(), 1);
   EXPECT_EQ(report["settings"]["resolution"].as<int>(), 24);
+  EXPECT_EQ(report["settings"]["reference_env"].as<std::string>(), kWorld + "interior.exr")
+      << "the database's map";
+  EXPECT_EQ(report["settings"]["scene"].as<std::string>(), "sphere");
   check_fig2(report["figure2"]);
   check_fig3(report["figure3"]);
   check_spacing(report["figure8"], "alpha", "brdf_l2");
   check_spacing(report["figure9"], "cz", "linear");
   check_embedding(report["embedding"]);
   check_plots(out, report["plots"]);
+  fs::remove_all(root);
+}
+
+// The names figure3 gives its metrics, in the report's order.
+std::vector<std::string> fig3_names(const YAML::Node& report) {
+  std::vector<std::string> names;
+  for (const auto& entry : report["figure3"]["metrics"])
+    names.push_back(entry.first.as<std::string>());
+  return names;
+}
+
+TEST(CliValidate, TheDatabasesMapIsTheReference) {
+  const fs::path root = scratch("_dbenv"), db = root / "db", out = root / "report";
+  auto r = run_cli("precompute --profile smoke --res 8 --env " + kWorld + "forest.exr --out " +
+                   db.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_cli("validate --res 8 --pairs 2 --fit-samples 1 --db " + db.string() + " --out " +
+              out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // forest.exr is among the default --env maps: comparing it with itself would say nothing.
+  EXPECT_NE(r.err.find(kWorld + "forest.exr is the reference map; left out"), std::string::npos)
+      << r.err;
+  const YAML::Node report = YAML::LoadFile((out / "report.yaml").string());
+  EXPECT_EQ(report["settings"]["reference_env"].as<std::string>(), kWorld + "forest.exr");
+  EXPECT_EQ(report["settings"]["envs"].size(), 1u);
+  EXPECT_EQ(fig3_names(report),
+            (std::vector<std::string>{"forest", "courtyard", "uniform", "brdf_l2"}));
+  EXPECT_EQ(report["figure3"]["metrics"]["forest"]["within"].as<double>(), 1.0);
+  EXPECT_TRUE(report["figure2"]["other_envs"]["courtyard"].IsMap());
+  fs::remove_all(root);
+}
+
+TEST(CliValidate, AnyMapCanBeTheReferenceAndEveryMapHasItsOwnName) {
+  const fs::path root = scratch("_names"), out = root / "report";
+  fs::create_directories(root / "elsewhere");
+  // Two more maps whose stems are already taken: by forest.exr and by the constant environment.
+  fs::create_symlink(kWorld + "forest.exr", root / "elsewhere" / "forest.exr");
+  fs::create_symlink(kWorld + "city.exr", root / "elsewhere" / "uniform.exr");
+  const auto r =
+      run_cli("validate --res 8 --reference " + kWorld + "courtyard.exr --env " + kWorld +
+              "forest.exr," + (root / "elsewhere" / "forest.exr").string() + "," +
+              (root / "elsewhere" / "uniform.exr").string() + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const YAML::Node report = YAML::LoadFile((out / "report.yaml").string());
+  EXPECT_EQ(report["settings"]["reference_env"].as<std::string>(), kWorld + "courtyard.exr");
+  EXPECT_EQ(fig3_names(report), (std::vector<std::string>{"courtyard", "forest", "forest-2",
+                                                          "uniform-2", "uniform", "brdf_l2"}));
+  EXPECT_EQ(report["figure2"]["other_envs"].size(), 3u);
+  // The same map under two names gives the same distances.
+  EXPECT_EQ(report["figure3"]["metrics"]["forest"]["within"].as<double>(),
+            report["figure3"]["metrics"]["forest-2"]["within"].as<double>());
   fs::remove_all(root);
 }
 
@@ -185,6 +271,16 @@ TEST(CliValidate, NamesAnUnwritableOutputDirectory) {
   const fs::path out = root / "file" / "report";
   expect_one_error("--out " + out.string(), "--out " + out.string());
   fs::remove_all(root);
+}
+
+TEST(CliValidate, ADatabaseAndAReferenceMapExcludeEachOther) {
+  // A database brings its own reference map; CLI11 rejects the pair before anything is loaded.
+  const fs::path out = scratch("_excl");
+  const auto r = run_cli("validate --db /nonexistent/db --reference " + kWorld +
+                         "forest.exr --out " + out.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("--db excludes --reference"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace

@@ -235,6 +235,26 @@ TEST(Database, RejectsAnImageFromAnotherEnvironment) {
       << error;
 }
 
+// Whatever renders against a database (validate's exact distances) must see the map its images
+// saw: a manifest whose map is now another file opens, but its map does not load.
+TEST(Database, LoadsItsEnvironmentMapOnlyAsTheImagesSawIt) {
+  EXPECT_EQ(load_database_env(Database::open(fixture().db)).pixel_hash(),
+            fixture().env.pixel_hash());
+  const fs::path dir = copy_of_reference("other_env");
+  const std::string forest = "/usr/share/blender/datafiles/studiolights/world/forest.exr";
+  replace_in_file(dir / "manifest.yaml", kDefaultEnvPath, forest);
+  const Database db = Database::open(dir);
+  try {
+    load_database_env(db);
+    ADD_FAILURE() << "loaded a map the images were not rendered under";
+  } catch (const DatabaseError& e) {
+    const std::string error = e.what();
+    EXPECT_NE(error.find(forest + ": changed since the database was built"), std::string::npos)
+        << error;
+    EXPECT_NE(error.find((dir / "manifest.yaml").string()), std::string::npos) << error;
+  }
+}
+
 TEST(Database, RefusesToOverwriteAnExistingDirectory) {
   const Fixture& f = fixture();
   EXPECT_THROW(precompute_database({tiny_profile(), f.db, false, 0, {}}, f.env, f.scene),

@@ -94,8 +94,11 @@ struct NamedRenderer {
   Renderer* renderer;
 };
 
+// The name of the BRDF-space metric's entry in a SceneStudy.
+inline const std::string kBrdfL2Entry = "brdf_l2";
+
 struct SceneEntry {
-  std::string name;           // the renderer's name, or "brdf_l2"
+  std::string name;           // the renderer's name, or kBrdfL2Entry
   Eigen::MatrixXd distances;  // unscaled
   Agreement agreement;        // with the first renderer's distances
 };
@@ -105,6 +108,9 @@ struct SceneStudy {
   std::size_t reference_sample = 0;  // the sample nearest alpha = 0.07 (the paper's Figure 3)
   double tolerance = 0.2;
   std::vector<SceneEntry> entries;  // one per renderer, in order, then brdf_l2
+  // within(i, j): the agreement of entry j with entry i taken as the reference (row 0 holds the
+  // entries' own `agreement.within`): how alike any two maps see the samples.
+  Eigen::MatrixXd within;
 };
 
 // renderers[0] is the reference environment; every other one (e.g. a constant environment,
