@@ -99,6 +99,10 @@ void check_fig3(const YAML::Node& f) {
     EXPECT_EQ(matrix[j][j].as<double>(), 1.0) << "each entry agrees with itself";
     EXPECT_EQ(matrix[0][j++].as<double>(), entry.second["within"].as<double>());
   }
+  // Holds at 24 x 24 already (95% and 92%; 99% and 98% at 128 x 128): the paper's "over 85%"
+  // between the two outdoor maps, whichever is the reference (rows 1 and 2).
+  EXPECT_GT(matrix[1][2].as<double>(), 0.85);
+  EXPECT_GT(matrix[2][1].as<double>(), 0.85);
   EXPECT_TRUE(f["natural_maps_agree"].IsScalar());
   // The constant environment and the BRDF-space metric agree less than any natural map.
   for (const char* natural : {"forest", "courtyard"})
