@@ -1,6 +1,7 @@
-// `brdfnav validate` end to end at a small scale: the report's structure (every figure and key of
-// report.yaml, every PNG readable at the size the report gives), the claims that already hold at
-// 24 x 24, and one clear error line for each kind of bad input.
+// `brdfnav validate` end to end at a small scale (images at 24 x 24, the test profile's database):
+// the report's structure (every figure and key of report.yaml, every PNG readable at the size the
+// report gives), the claims that already hold at that scale, and one clear error line for each
+// kind of bad input.
 #include "app/cli_runner.h"
 
 #include <brdfnav/precompute/image.h>
@@ -127,7 +128,7 @@ void check_spacing(const YAML::Node& f, const char* parameter, const char* basel
 }
 
 void check_embedding(const YAML::Node& f) {
-  EXPECT_EQ(f["pairs"].as<int>(), 6);
+  EXPECT_EQ(f["pairs"].as<int>(), 20);
   for (const char* kind : {"anywhere", "on_nodes"}) {
     ASSERT_TRUE(f[kind].IsSequence()) << kind;
     ASSERT_GE(f[kind].size(), 2u) << kind;
@@ -142,9 +143,13 @@ void check_embedding(const YAML::Node& f) {
   for (std::size_t i = 1; i < nodes.size(); ++i)
     for (const char* q : {"median", "p95"})
       EXPECT_LE(nodes[i][q].as<double>(), nodes[i - 1][q].as<double>() + 1e-6) << q << i;
-  // The coarse test grids' interpolation costs more than truncating to the last k.
+  // Interpolating between the test grids' nodes costs more than truncating to the last k.
   const std::size_t last = nodes.size() - 1;
   EXPECT_LT(nodes[last]["median"].as<double>(), f["anywhere"][last]["median"].as<double>());
+  // Issue #4's target holds on the test profile's grids (0.25% and 0.6% measured): the embedding
+  // is the metric, anywhere in the grids, to a median of 1% and a p95 of 3%.
+  EXPECT_LE(f["anywhere"][last]["median"].as<double>(), 0.01);
+  EXPECT_LE(f["anywhere"][last]["p95"].as<double>(), 0.03);
 }
 
 // Every plot the report lists is a readable PNG of the listed size; every figure has one.
@@ -165,12 +170,25 @@ void check_plots(const fs::path& dir, const YAML::Node& plots) {
   EXPECT_TRUE(files.count("fig2_environments.png")) << "Figure 2 under every map";
 }
 
-// One run with a tiny database, checked as a whole: the studies are the slow part.
+// A test-profile database: CTest's shared one ($BRDFNAV_TEST_DATABASE) when it is of that
+// profile (sanitized trees share a smoke one), else one built under `root`.
+fs::path test_profile_database(const fs::path& root) {
+  if (const char* shared = std::getenv("BRDFNAV_TEST_DATABASE"); shared && *shared)
+    if (YAML::LoadFile((fs::path(shared) / "manifest.yaml").string())["profile"]
+            .as<std::string>() == "test")
+      return shared;
+  const fs::path db = root / "db";
+  const auto r = run_cli("precompute --profile test --out " + db.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return db;
+}
+
+// One run on the test profile, checked as a whole: the studies are the slow part.
 TEST(CliValidate, WritesEveryFigureAtSmallScale) {
-  const fs::path root = scratch("_run"), db = root / "db", out = root / "report";
-  auto r = run_cli("precompute --profile smoke --res 8 --out " + db.string());
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  r = run_cli("validate --res 24 --pairs 6 --db " + db.string() + " --out " + out.string());
+  const fs::path root = scratch("_run"), out = root / "report";
+  const fs::path db = test_profile_database(root);
+  const auto r =
+      run_cli("validate --res 24 --pairs 20 --db " + db.string() + " --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
 
   for (const auto& entry : fs::directory_iterator(out))
