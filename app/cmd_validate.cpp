@@ -13,6 +13,7 @@
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <type_traits>
 
 namespace brdfnav::cli {
 
@@ -46,12 +47,20 @@ void check_writable(const fs::path& dir) {
 
 // Runs one study with a line on stderr when it is done (they take seconds to minutes).
 template <typename F>
-auto timed(const char* what, F&& study) {
+auto timed(const std::string& what, F&& study) {
   const auto start = std::chrono::steady_clock::now();
-  auto result = study();
-  const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-  std::fprintf(stderr, "brdfnav: validate: %s done in %.1f s\n", what, took.count());
-  return result;
+  const auto done = [&] {
+    const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+    std::fprintf(stderr, "brdfnav: validate: %s done in %.1f s\n", what.c_str(), took.count());
+  };
+  if constexpr (std::is_void_v<std::invoke_result_t<F>>) {
+    study();
+    done();
+  } else {
+    auto result = study();
+    done();
+    return result;
+  }
 }
 
 std::vector<double> log_grid(double lo, double hi, int count) {
@@ -124,41 +133,31 @@ struct Inputs {
   }
 };
 
-// Figure 2 under every other map: how much the curve's shape owes to the environment.
-std::vector<NamedPellacini> run_fig2_others(const std::vector<NamedRenderer>& others) {
-  std::vector<NamedPellacini> studies;
-  for (const NamedRenderer& r : others) studies.push_back({r.name, pellacini_study(*r.renderer)});
-  return studies;
+// A map's short name for each input map (map_names), the reference first.
+std::vector<std::string> input_names(const Inputs& in) {
+  std::vector<std::string> paths{in.reference_path};
+  paths.insert(paths.end(), in.other_paths.begin(), in.other_paths.end());
+  return map_names(paths);
 }
 
-// Figure 3's renderers: the reference, every other map and a constant environment, which shows
-// no highlight shapes (the paper expects it to fail).
-SceneStudy run_fig3(const Inputs& in, std::vector<NamedRenderer> named, int resolution) {
+// Figure 2 and Figure 3's distances under each other map, then under a constant environment,
+// which shows no highlight shapes (the paper expects it to fail). One renderer at a time: a
+// renderer is its map's largest allocation (about 0.8 GB for a 4096 x 2048 map).
+void run_other_maps(const Inputs& in, const std::vector<std::string>& names,
+                    const SceneSamples& samples, int resolution, ValidationResults& r,
+                    std::vector<SceneEntry>& fig3) {
+  for (std::size_t i = 0; i < in.others.size(); ++i)
+    timed(names[i + 1] + ": figures 2 and 3", [&] {
+      Renderer renderer(in.others[i], in.scene, resolution);
+      r.fig2_others.push_back({names[i + 1], pellacini_study(renderer)});
+      fig3.push_back({names[i + 1], image_distances(renderer, samples.materials), {}});
+    });
   constexpr int kUniformHeight = 32;
   const EnvMap uniform(2 * kUniformHeight, kUniformHeight,
                        std::vector<float>(6 * kUniformHeight * kUniformHeight, 1.0f), kUniform);
   Renderer constant(uniform, in.scene, resolution);
-  named.push_back({kUniform, &constant});
-  return scene_study(named);
+  fig3.push_back({kUniform, image_distances(constant, samples.materials), {}});
 }
-
-// One renderer per map, the reference first, each named (map_names).
-struct MapRenderers {
-  std::vector<std::unique_ptr<Renderer>> owned;
-  std::vector<NamedRenderer> named;
-
-  MapRenderers(const Inputs& in, int resolution) {
-    std::vector<const EnvMap*> maps{&in.reference};
-    std::vector<std::string> paths{in.reference_path};
-    for (std::size_t i = 0; i < in.others.size(); ++i)
-      maps.push_back(&in.others[i]), paths.push_back(in.other_paths[i]);
-    const std::vector<std::string> names = map_names(paths);
-    for (std::size_t i = 0; i < maps.size(); ++i) {
-      owned.push_back(std::make_unique<Renderer>(*maps[i], in.scene, resolution));
-      named.push_back({names[i], owned.back().get()});
-    }
-  }
-};
 
 ValidationResults run(const ValidateOptions& o) {
   const Inputs in(o);
@@ -169,21 +168,22 @@ ValidationResults run(const ValidateOptions& o) {
   r.scene = in.db ? in.db->manifest().scene : "sphere";
   r.other_envs = in.other_paths;
   r.database = o.db;
-  const MapRenderers maps(in, o.resolution);
-  Renderer& main = *maps.named.front().renderer;
-  r.fig2 = timed("figure 2", [&] { return pellacini_study(main); });
-  r.fig2_others = timed("figure 2, other maps", [&] {
-    return run_fig2_others({maps.named.begin() + 1, maps.named.end()});
-  });
-  r.fig3 = timed("figure 3", [&] { return run_fig3(in, maps.named, o.resolution); });
-  constexpr int kRow = 8;
-  r.fig8 = timed("figure 8", [&] {
-    return spacing_study(main, ward_sample, log_grid(0.01, 0.37, 32), Baseline::brdf_l2, kRow);
-  });
-  r.fig9 = timed("figure 9", [&] {
-    return spacing_study(main, lafortune_sample, linear_grid(0.54, 0.58, 41), Baseline::linear,
-                         kRow);
-  });
+  const std::vector<std::string> names = input_names(in);
+  const SceneSamples samples = scene_samples();
+  std::vector<SceneEntry> fig3;
+  {
+    Renderer main(in.reference, in.scene, o.resolution);
+    timed(names[0] + ": figures 2, 3, 8 and 9", [&] {
+      r.fig2 = pellacini_study(main);
+      fig3.push_back({names[0], image_distances(main, samples.materials), {}});
+      constexpr int kRow = 8;
+      r.fig8 = spacing_study(main, ward_sample, log_grid(0.01, 0.37, 32), Baseline::brdf_l2, kRow);
+      r.fig9 = spacing_study(main, lafortune_sample, linear_grid(0.54, 0.58, 41), Baseline::linear,
+                             kRow);
+    });
+  }
+  run_other_maps(in, names, samples, o.resolution, r, fig3);
+  r.fig3 = scene_study(samples, std::move(fig3));
   if (in.db) {
     Renderer exact(in.reference, in.scene, in.db->manifest().resolution);
     r.embedding = timed("embedding", [&] { return embedding_study(*in.db, exact, o.pairs); });

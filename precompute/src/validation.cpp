@@ -314,19 +314,24 @@ Agreement compare_distances(const Eigen::MatrixXd& reference, const Eigen::Matri
   return a;
 }
 
-SceneStudy scene_study(const std::vector<NamedRenderer>& renderers) {
+SceneSamples scene_samples() {
   constexpr int kSamples = 25;
-  SceneStudy study;
-  std::vector<Material> samples;
+  SceneSamples s;
   for (int i = 0; i < kSamples; ++i) {
-    study.alpha.push_back(0.01 + 0.35 * i / (kSamples - 1));
-    samples.push_back(ward_sample(study.alpha.back()));
-    if (std::abs(study.alpha.back() - 0.07) < std::abs(study.alpha[study.reference_sample] - 0.07))
-      study.reference_sample = study.alpha.size() - 1;
+    s.alpha.push_back(0.01 + 0.35 * i / (kSamples - 1));
+    s.materials.push_back(ward_sample(s.alpha.back()));
+    if (std::abs(s.alpha.back() - 0.07) < std::abs(s.alpha[s.reference_sample] - 0.07))
+      s.reference_sample = s.alpha.size() - 1;
   }
-  for (const NamedRenderer& r : renderers)
-    study.entries.push_back({r.name, image_distances(*r.renderer, samples), {}});
-  study.entries.push_back({kBrdfL2Entry, brdf_distances(samples), {}});
+  return s;
+}
+
+SceneStudy scene_study(const SceneSamples& samples, std::vector<SceneEntry> maps) {
+  SceneStudy study;
+  study.alpha = samples.alpha;
+  study.reference_sample = samples.reference_sample;
+  study.entries = std::move(maps);
+  study.entries.push_back({kBrdfL2Entry, brdf_distances(samples.materials), {}});
   for (SceneEntry& e : study.entries)
     e.agreement = compare_distances(study.entries.front().distances, e.distances, study.tolerance);
   const auto n = Eigen::Index(study.entries.size());

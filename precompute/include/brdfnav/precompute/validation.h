@@ -89,33 +89,38 @@ struct Agreement {
 Agreement compare_distances(const Eigen::MatrixXd& reference, const Eigen::MatrixXd& other,
                             double tolerance);
 
-struct NamedRenderer {
-  std::string name;
-  Renderer* renderer;
+// Figure 3's samples: 25 grey Ward lobes (ward_sample), alpha 0.01 .. 0.36 evenly spaced.
+struct SceneSamples {
+  std::vector<double> alpha;
+  std::vector<Material> materials;
+  std::size_t reference_sample = 0;  // the sample nearest alpha = 0.07 (the paper's Figure 3)
 };
+SceneSamples scene_samples();
 
 // The name of the BRDF-space metric's entry in a SceneStudy.
 inline const std::string kBrdfL2Entry = "brdf_l2";
 
 struct SceneEntry {
-  std::string name;           // the renderer's name, or kBrdfL2Entry
+  std::string name;           // the environment's name, or kBrdfL2Entry
   Eigen::MatrixXd distances;  // unscaled
-  Agreement agreement;        // with the first renderer's distances
+  Agreement agreement;        // with the first entry's distances
 };
 
 struct SceneStudy {
-  std::vector<double> alpha;         // 25 samples, 0.01 .. 0.36 evenly spaced
-  std::size_t reference_sample = 0;  // the sample nearest alpha = 0.07 (the paper's Figure 3)
+  std::vector<double> alpha;  // SceneSamples::alpha
+  std::size_t reference_sample = 0;
   double tolerance = 0.2;
-  std::vector<SceneEntry> entries;  // one per renderer, in order, then brdf_l2
+  std::vector<SceneEntry> entries;  // one per environment, in order, then brdf_l2
   // within(i, j): the agreement of entry j with entry i taken as the reference (row 0 holds the
   // entries' own `agreement.within`): how alike any two maps see the samples.
   Eigen::MatrixXd within;
 };
 
-// renderers[0] is the reference environment; every other one (e.g. a constant environment,
-// which the paper expects to fail) and the BRDF-space metric are compared with it.
-SceneStudy scene_study(const std::vector<NamedRenderer>& renderers);
+// `maps`: the image_distances of the samples under each environment, the reference first; the
+// others (e.g. a constant environment, which the paper expects to fail) and the BRDF-space
+// metric, appended here, are compared with it. The caller renders one map at a time, so that only
+// one renderer (a map's largest allocation) need be alive.
+SceneStudy scene_study(const SceneSamples& samples, std::vector<SceneEntry> maps);
 
 // --- Figures 8 and 9: uniform spacing ----------------------------------------------------------
 
