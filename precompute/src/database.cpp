@@ -4,6 +4,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <optional>
 
 namespace brdfnav {
 
@@ -140,12 +141,17 @@ fs::path Database::diffuse_path() const {
 
 EnvMap load_database_env(const Database& db) {
   const Manifest& m = db.manifest();
-  EnvMap env = EnvMap::load(m.env_path, {.sanitize = true});
-  if (env.pixel_hash() != m.env_hash)
+  const std::string manifest = (db.dir() / db::kManifestFile).string();
+  std::optional<EnvMap> env;
+  try {
+    env = EnvMap::load(m.env_path, {.sanitize = true});
+  } catch (const EnvMapError& e) {
+    throw DatabaseError(e.what() + (" (the environment map " + manifest + " names)"));
+  }
+  if (env->pixel_hash() != m.env_hash)
     throw DatabaseError(m.env_path + ": changed since the database was built (pixel sha1 " +
-                        env.pixel_hash() + ", " + (db.dir() / db::kManifestFile).string() +
-                        " says " + m.env_hash + ")");
-  return env;
+                        env->pixel_hash() + ", " + manifest + " says " + m.env_hash + ")");
+  return std::move(*env);
 }
 
 }  // namespace brdfnav

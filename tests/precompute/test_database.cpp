@@ -253,6 +253,15 @@ TEST(Database, LoadsItsEnvironmentMapOnlyAsTheImagesSawIt) {
         << error;
     EXPECT_NE(error.find((dir / "manifest.yaml").string()), std::string::npos) << error;
   }
+  replace_in_file(dir / "manifest.yaml", forest, "/nonexistent/map.exr");
+  try {
+    load_database_env(Database::open(dir));
+    ADD_FAILURE() << "loaded a missing map";
+  } catch (const DatabaseError& e) {
+    const std::string error = e.what();
+    EXPECT_NE(error.find("/nonexistent/map.exr"), std::string::npos) << error;
+    EXPECT_NE(error.find((dir / "manifest.yaml").string() + " names"), std::string::npos) << error;
+  }
 }
 
 TEST(Database, RefusesToOverwriteAnExistingDirectory) {

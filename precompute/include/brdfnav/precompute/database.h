@@ -121,7 +121,7 @@ class Database {
 // The environment map the database's images were rendered under, loaded from the manifest's path
 // (NaN/Inf texels set to 0, as a --sanitize-env build did) and checked against the manifest's
 // pixel SHA-1. Throws DatabaseError naming the map and the manifest when the file has changed
-// since the build, EnvMapError when it can no longer be read.
+// since the build or can no longer be read.
 EnvMap load_database_env(const Database& db);
 
 }  // namespace brdfnav
