@@ -104,6 +104,13 @@ void check_fig3(const YAML::Node& f) {
   // between the two outdoor maps, whichever is the reference (rows 1 and 2).
   EXPECT_GT(matrix[1][2].as<double>(), 0.85);
   EXPECT_GT(matrix[2][1].as<double>(), 0.85);
+  // The count over the natural maps' ordered pairs (interior, forest, courtyard) is the matrix's.
+  EXPECT_EQ(f["natural_pairs"].as<int>(), 6);
+  int agreeing = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) agreeing += i != k && matrix[i][k].as<double>() > 0.85;
+  EXPECT_EQ(f["natural_pairs_agreeing"].as<int>(), agreeing);
+  EXPECT_GE(agreeing, 2);
   EXPECT_TRUE(f["natural_maps_agree"].IsScalar());
   // The constant environment and the BRDF-space metric agree less than any natural map.
   for (const char* natural : {"forest", "courtyard"})
