@@ -20,18 +20,35 @@ struct LatLongRect {
   Vec3 centroid;  // unit
 };
 
-LatLongRect lat_long_rect(double x0, double x1, double y0, double y1, int width, int height) {
-  // The differences are written in forms without cancellation: the rows by the poles are thin.
-  const double phi_m = kPi * ((x0 + x1) / width - 1), half_dphi = kPi * (x1 - x0) / width;
+// What the rectangle's solid angle and centroid take from its rows [y0, y1] ...
+struct LatLongRows {
+  double sin_tm, sin_hd;
+  double s2;       // integral of sin^2(theta) over [theta0, theta1]
+  double y_share;  // the centroid's y moment over 2 * half_dphi
+};
+// The differences are written in forms without cancellation: the rows by the poles are thin.
+LatLongRows lat_long_rows(double y0, double y1, int height) {
   const double theta_m = kPi * (y0 + y1) / (2 * height), dtheta = kPi * (y1 - y0) / height;
-  const double sin_tm = std::sin(theta_m), sin_hd = std::sin(dtheta / 2);
-  // integral of sin^2(theta) over [theta0, theta1]
-  const double s2 = 0.5 * ((dtheta - std::sin(dtheta)) + 2 * std::sin(dtheta) * sin_tm * sin_tm);
-  const double sin_hp = std::sin(half_dphi);
-  const Vec3 moment(-s2 * 2 * std::sin(phi_m) * sin_hp,
-                    0.5 * std::sin(2 * theta_m) * std::sin(dtheta) * 2 * half_dphi,
-                    s2 * 2 * std::cos(phi_m) * sin_hp);
-  return {2 * half_dphi * 2 * sin_tm * sin_hd, moment.normalized()};
+  const double sin_tm = std::sin(theta_m);
+  return {sin_tm, std::sin(dtheta / 2),
+          0.5 * ((dtheta - std::sin(dtheta)) + 2 * std::sin(dtheta) * sin_tm * sin_tm),
+          0.5 * std::sin(2 * theta_m) * std::sin(dtheta)};
+}
+// ... and from its columns [x0, x1].
+struct LatLongColumns {
+  double half_dphi, sin_phi_m, cos_phi_m, sin_hp;
+};
+LatLongColumns lat_long_columns(double x0, double x1, int width) {
+  const double phi_m = kPi * ((x0 + x1) / width - 1), half_dphi = kPi * (x1 - x0) / width;
+  return {half_dphi, std::sin(phi_m), std::cos(phi_m), std::sin(half_dphi)};
+}
+LatLongRect lat_long_rect(const LatLongRows& r, const LatLongColumns& c) {
+  const Vec3 moment(-r.s2 * 2 * c.sin_phi_m * c.sin_hp, r.y_share * 2 * c.half_dphi,
+                    r.s2 * 2 * c.cos_phi_m * c.sin_hp);
+  return {2 * c.half_dphi * 2 * r.sin_tm * r.sin_hd, moment.normalized()};
+}
+LatLongRect lat_long_rect(double x0, double x1, double y0, double y1, int width, int height) {
+  return lat_long_rect(lat_long_rows(y0, y1, height), lat_long_columns(x0, x1, width));
 }
 
 void store_spread(std::vector<float>& spread, std::size_t node, const Eigen::Matrix3d& m) {
@@ -42,7 +59,9 @@ void store_spread(std::vector<float>& spread, std::size_t node, const Eigen::Mat
 }  // namespace
 
 Eigen::Matrix3d EnvPyramid::texel_spread(int x, int y, int width, int height) {
-  const TexelFrame t = texel_frame(x, y, width, height);
+  return texel_spread(texel_frame(x, y, width, height));
+}
+Eigen::Matrix3d EnvPyramid::texel_spread(const TexelFrame& t) {
   return (t.d_theta * t.d_theta / 12) * t.e_theta * t.e_theta.transpose() +
          (t.d_phi * t.d_phi / 12) * t.e_phi * t.e_phi.transpose();
 }
@@ -109,11 +128,20 @@ void EnvPyramid::build_texels(const EnvMap& env) {
                std::vector<float>(3 * count),
                std::vector<float>(6 * count),
                std::vector<double>(count)};
+  // Every angle a texel's terms need is its row's or its column's: computed once each.
+  std::vector<LatLongColumns> columns;
+  std::vector<SinCos> phis;
+  for (int x = 0; x < w; ++x) {
+    columns.push_back(lat_long_columns(x, x + 1, w));
+    phis.push_back(texel_phi(x, w));
+  }
   for (int y = 0; y < h; ++y) {
+    const LatLongRows rows = lat_long_rows(y, y + 1, h);
+    const SinCos theta = texel_theta(y, h);
     for (int x = 0; x < w; ++x) {
-      const LatLongRect rect = lat_long_rect(x, x + 1, y, y + 1, w, h);
+      const LatLongRect rect = lat_long_rect(rows, columns[x]);
       const std::size_t i = texels.index(x, y);
-      store_spread(texels.spread, i / 3, texel_spread(x, y, w, h));
+      store_spread(texels.spread, i / 3, texel_spread(texel_frame(theta, phis[x], w, h)));
       const Rgb power = env.texel(x, y) * rect.solid_angle;
       for (int c = 0; c < 3; ++c) texels.centroid[i + c] = static_cast<float>(rect.centroid[c]);
       for (int c = 0; c < 3; ++c) texels.power[i + c] = static_cast<float>(power[c]);

@@ -26,11 +26,26 @@ struct TexelFrame {
   Vec3 centre, e_theta, e_phi;
   double d_theta, d_phi;
 };
-inline TexelFrame texel_frame(int x, int y, int width, int height) {
-  const double theta = kPi * (y + 0.5) / height, phi = 2 * kPi * ((x + 0.5) / width - 0.5);
-  const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
+// The sine and cosine of a texel centre's theta (of its row) or phi (of its column).
+struct SinCos {
+  double sin, cos;
+};
+inline SinCos texel_theta(int y, int height) {
+  const double theta = kPi * (y + 0.5) / height;
+  return {std::sin(theta), std::cos(theta)};
+}
+inline SinCos texel_phi(int x, int width) {
+  const double phi = 2 * kPi * ((x + 0.5) / width - 0.5);
+  return {std::sin(phi), std::cos(phi)};
+}
+// From its row's and its column's angles (tables of them spare a map's texels the sines).
+inline TexelFrame texel_frame(SinCos theta, SinCos phi, int width, int height) {
+  const double st = theta.sin, ct = theta.cos, sp = phi.sin, cp = phi.cos;
   return {Vec3(-st * sp, ct, st * cp), Vec3(-ct * sp, -st, ct * cp), Vec3(-cp, 0, -sp),
           kPi / height, 2 * kPi / width * st};
+}
+inline TexelFrame texel_frame(int x, int y, int width, int height) {
+  return texel_frame(texel_theta(y, height), texel_phi(x, width), width, height);
 }
 
 // The directions of the n x n pieces of texel (x, y) of a map width x height, rows then columns,
@@ -78,6 +93,7 @@ class EnvPyramid {
   }
   // ... of texel (x, y) of a map width x height, as a flat rectangle in its tangent plane.
   static Eigen::Matrix3d texel_spread(int x, int y, int width, int height);
+  static Eigen::Matrix3d texel_spread(const TexelFrame& t);
   Vec3 centroid(int level, int x, int y) const {
     const Level& l = levels_[level];
     return l.centroid_at(l.index(x, y));
