@@ -51,11 +51,6 @@ LatLongRect lat_long_rect(double x0, double x1, double y0, double y1, int width,
   return lat_long_rect(lat_long_rows(y0, y1, height), lat_long_columns(x0, x1, width));
 }
 
-void store_spread(std::vector<float>& spread, std::size_t node, const Eigen::Matrix3d& m) {
-  const double values[6] = {m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2)};
-  for (int k = 0; k < 6; ++k) spread[6 * node + k] = static_cast<float>(values[k]);
-}
-
 }  // namespace
 
 Eigen::Matrix3d EnvPyramid::texel_spread(int x, int y, int width, int height) {
@@ -65,11 +60,15 @@ Eigen::Matrix3d EnvPyramid::texel_spread(const TexelFrame& t) {
   return (t.d_theta * t.d_theta / 12) * t.e_theta * t.e_theta.transpose() +
          (t.d_phi * t.d_phi / 12) * t.e_phi * t.e_phi.transpose();
 }
+Eigen::Matrix3d EnvPyramid::stored_texel_spread(int x, int y) const {
+  const TexelFrame t = texel_frame(texel_thetas_[y], texel_phis_[x], width(0), height(0));
+  return unpack_spread(pack_spread(texel_spread(t)).data());
+}
 
 EnvPyramid::EnvPyramid(const EnvMap& env) {
   build_texels(env);
   while (levels_.back().width > 2 || levels_.back().height > 1)
-    levels_.push_back(half_of(levels_.back()));
+    levels_.push_back(half_of(level_count() - 1));
   for (Level& l : levels_) {
     l.luminance = {};
     weigh(l);
@@ -126,22 +125,20 @@ void EnvPyramid::build_texels(const EnvMap& env) {
                std::vector<float>(3 * count),
                std::vector<float>(3 * count),
                std::vector<float>(3 * count),
-               std::vector<float>(6 * count),
+               {},
                std::vector<double>(count)};
   // Every angle a texel's terms need is its row's or its column's: computed once each.
   std::vector<LatLongColumns> columns;
-  std::vector<SinCos> phis;
   for (int x = 0; x < w; ++x) {
     columns.push_back(lat_long_columns(x, x + 1, w));
-    phis.push_back(texel_phi(x, w));
+    texel_phis_.push_back(texel_phi(x, w));
   }
+  for (int y = 0; y < h; ++y) texel_thetas_.push_back(texel_theta(y, h));
   for (int y = 0; y < h; ++y) {
     const LatLongRows rows = lat_long_rows(y, y + 1, h);
-    const SinCos theta = texel_theta(y, h);
     for (int x = 0; x < w; ++x) {
       const LatLongRect rect = lat_long_rect(rows, columns[x]);
       const std::size_t i = texels.index(x, y);
-      store_spread(texels.spread, i / 3, texel_spread(texel_frame(theta, phis[x], w, h)));
       const Rgb power = env.texel(x, y) * rect.solid_angle;
       for (int c = 0; c < 3; ++c) texels.centroid[i + c] = static_cast<float>(rect.centroid[c]);
       for (int c = 0; c < 3; ++c) texels.power[i + c] = static_cast<float>(power[c]);
@@ -158,7 +155,8 @@ void EnvPyramid::build_texels(const EnvMap& env) {
 
 // A parent's power is its children's sum; its centroid their luminance-weighted mean direction
 // (the solid-angle weighted one where they are black, so that it stays inside the node).
-EnvPyramid::Level EnvPyramid::half_of(const Level& fine) const {
+EnvPyramid::Level EnvPyramid::half_of(int fine_level) const {
+  const Level& fine = levels_[fine_level];
   Level coarse{(fine.width + 1) / 2, (fine.height + 1) / 2, {}, {}, {}, {}, {}};
   const std::size_t count = static_cast<std::size_t>(coarse.width) * coarse.height;
   coarse.centroid.assign(3 * count, 0.f);
@@ -192,11 +190,12 @@ EnvPyramid::Level EnvPyramid::half_of(const Level& fine) const {
           const std::size_t j = fine.index(fx, fy);
           const double weight = lit_up ? fine.luminance[j / 3] : 1.0;
           const Vec3 offset = fine.centroid_at(j) - centroid;
-          spread += weight * (fine.spread_at(j) + offset * offset.transpose());
+          spread += weight * (this->spread(fine_level, fx, fy) + offset * offset.transpose());
           total += weight;
         }
       }
-      store_spread(coarse.spread, i / 3, spread / total);
+      const std::array<float, 6> packed = pack_spread(spread / total);
+      std::copy(packed.begin(), packed.end(), &coarse.spread[2 * i]);
       for (int c = 0; c < 3; ++c) coarse.centroid[i + c] = static_cast<float>(centroid[c]);
       for (int c = 0; c < 3; ++c) coarse.power[i + c] = static_cast<float>(power[c]);
       coarse.luminance[i / 3] = lum;

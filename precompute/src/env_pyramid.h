@@ -11,6 +11,7 @@
 
 #include <brdfnav/precompute/env_map.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -88,6 +89,7 @@ class EnvPyramid {
   // The luminance-weighted covariance of the directions within a node about its centroid
   // (world): how its power is spread, to second order. A texel's is its own extent's.
   Eigen::Matrix3d spread(int level, int x, int y) const {
+    if (level == 0) return stored_texel_spread(x, y);
     const Level& l = levels_[level];
     return l.spread_at(l.index(x, y));
   }
@@ -128,7 +130,8 @@ class EnvPyramid {
 
  private:
   // Per node three floats in each array (six in spread: xx, xy, xz, yy, yz, zz): the pieces of
-  // split texels read the power alone.
+  // split texels read the power alone. Level 0 keeps no spreads: a texel's is a function of its
+  // row's and its column's angles, computed when asked for (a quarter of the pyramid's memory).
   struct Level {
     int width = 0, height = 0;
     std::vector<float> centroid, power, weight, spread;
@@ -137,21 +140,29 @@ class EnvPyramid {
     Vec3 centroid_at(std::size_t i) const {
       return Vec3(centroid[i], centroid[i + 1], centroid[i + 2]);
     }
-    Eigen::Matrix3d spread_at(std::size_t i) const {
-      const float* s = &spread[2 * i];
-      Eigen::Matrix3d m;
-      m << s[0], s[1], s[2], s[1], s[3], s[4], s[2], s[4], s[5];
-      return m;
-    }
+    Eigen::Matrix3d spread_at(std::size_t i) const { return unpack_spread(&spread[2 * i]); }
   };
+  // A spread as the pyramid keeps it: the six entries of its upper triangle as floats.
+  static std::array<float, 6> pack_spread(const Eigen::Matrix3d& m) {
+    return {float(m(0, 0)), float(m(0, 1)), float(m(0, 2)),
+            float(m(1, 1)), float(m(1, 2)), float(m(2, 2))};
+  }
+  static Eigen::Matrix3d unpack_spread(const float* s) {
+    Eigen::Matrix3d m;
+    m << s[0], s[1], s[2], s[1], s[3], s[4], s[2], s[4], s[5];
+    return m;
+  }
+  // Texel (x, y)'s spread, rounded as every other level's are.
+  Eigen::Matrix3d stored_texel_spread(int x, int y) const;
   static Rgb rgb(const std::vector<float>& values, std::size_t i) {
     return Rgb(values[i], values[i + 1], values[i + 2]);
   }
   void build_texels(const EnvMap& env);
-  Level half_of(const Level& fine) const;
+  Level half_of(int fine_level) const;
   static void weigh(Level& level);
   std::vector<HotGroup> group_hot_texels(int level) const;
 
+  std::vector<SinCos> texel_thetas_, texel_phis_;  // of level 0's rows and columns
   std::vector<HotTexel> hot_;
   std::vector<std::vector<HotGroup>> hot_groups_;  // per level; level 0 empty
   std::vector<Level> levels_;
