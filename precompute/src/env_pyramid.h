@@ -89,7 +89,7 @@ class EnvPyramid {
   // The luminance-weighted covariance of the directions within a node about its centroid
   // (world): how its power is spread, to second order. A texel's is its own extent's.
   Eigen::Matrix3d spread(int level, int x, int y) const {
-    if (level == 0) return stored_texel_spread(x, y);
+    if (level == 0) return rounded_texel_spread(x, y);
     const Level& l = levels_[level];
     return l.spread_at(l.index(x, y));
   }
@@ -131,7 +131,7 @@ class EnvPyramid {
  private:
   // Per node three floats in each array (six in spread: xx, xy, xz, yy, yz, zz): the pieces of
   // split texels read the power alone. Level 0 keeps no spreads: a texel's is a function of its
-  // row's and its column's angles, computed when asked for (a quarter of the pyramid's memory).
+  // row's and its column's angles, computed when asked for (24 of its 60 bytes per texel).
   struct Level {
     int width = 0, height = 0;
     std::vector<float> centroid, power, weight, spread;
@@ -153,7 +153,7 @@ class EnvPyramid {
     return m;
   }
   // Texel (x, y)'s spread, rounded as every other level's are.
-  Eigen::Matrix3d stored_texel_spread(int x, int y) const;
+  Eigen::Matrix3d rounded_texel_spread(int x, int y) const;
   static Rgb rgb(const std::vector<float>& values, std::size_t i) {
     return Rgb(values[i], values[i + 1], values[i + 2]);
   }
