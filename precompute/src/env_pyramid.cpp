@@ -61,8 +61,7 @@ Eigen::Matrix3d EnvPyramid::texel_spread(const TexelFrame& t) {
          (t.d_phi * t.d_phi / 12) * t.e_phi * t.e_phi.transpose();
 }
 Eigen::Matrix3d EnvPyramid::rounded_texel_spread(int x, int y) const {
-  const TexelFrame t = texel_frame(texel_thetas_[y], texel_phis_[x], width(0), height(0));
-  return unpack_spread(pack_spread(texel_spread(t)).data());
+  return unpack_spread(pack_spread(texel_spread(frame_of_texel(x, y))).data());
 }
 
 EnvPyramid::EnvPyramid(const EnvMap& env) {

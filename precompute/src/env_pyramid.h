@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace brdfnav {
@@ -49,17 +50,21 @@ inline TexelFrame texel_frame(int x, int y, int width, int height) {
   return texel_frame(texel_theta(y, height), texel_phi(x, width), width, height);
 }
 
-// The directions of the n x n pieces of texel (x, y) of a map width x height, rows then columns,
-// each with an equal share of its solid angle: the texel's centre moved along the tangents of
-// theta and phi (exact to second order in the texel's size), f(direction) for each.
+// The directions of the n x n pieces of the texel of frame t, rows then columns, each with an
+// equal share of its solid angle: the texel's centre moved along the tangents of theta and phi
+// (exact to second order in the texel's size), f(direction) for each. Then the same of texel
+// (x, y) of a map width x height.
 template <typename F>
-void for_each_texel_piece(int x, int y, int width, int height, int n, F&& f) {
-  const TexelFrame t = texel_frame(x, y, width, height);
+void for_each_texel_piece(const TexelFrame& t, int n, F&& f) {
   const double d_theta = t.d_theta / n, d_phi = t.d_phi / n;
   for (int j = 0; j < n; ++j) {
     const Vec3 row = t.centre + ((j + 0.5) - 0.5 * n) * d_theta * t.e_theta;
     for (int i = 0; i < n; ++i) f((row + ((i + 0.5) - 0.5 * n) * d_phi * t.e_phi).normalized());
   }
+}
+template <typename F>
+void for_each_texel_piece(int x, int y, int width, int height, int n, F&& f) {
+  for_each_texel_piece(texel_frame(x, y, width, height), n, std::forward<F>(f));
 }
 
 struct EnvNode {
@@ -96,6 +101,11 @@ class EnvPyramid {
   // ... of texel (x, y) of a map width x height, as a flat rectangle in its tangent plane.
   static Eigen::Matrix3d texel_spread(int x, int y, int width, int height);
   static Eigen::Matrix3d texel_spread(const TexelFrame& t);
+  // texel_frame() of level-0 texel (x, y), from the tables of its row's and column's angles.
+  TexelFrame frame_of_texel(int x, int y) const {
+    return texel_frame(texel_thetas_[std::size_t(y)], texel_phis_[std::size_t(x)], width(0),
+                       height(0));
+  }
   Vec3 centroid(int level, int x, int y) const {
     const Level& l = levels_[level];
     return l.centroid_at(l.index(x, y));

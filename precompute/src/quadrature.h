@@ -513,8 +513,7 @@ class Quadrature {
       return weighted(t.radiance, Value(value(t.centroid) * t.solid_angle));
     const int n = hot_split_;
     Value sum = zero<Value>();
-    for_each_texel_piece(t.x, t.y, env_.width(0), env_.height(0), n,
-                         [&](const Vec3& w) { sum += value(w); });
+    for_each_texel_piece(env_.frame_of_texel(t.x, t.y), n, [&](const Vec3& w) { sum += value(w); });
     return weighted(t.radiance, Value(sum * (t.solid_angle / (n * n))));
   }
 

@@ -215,10 +215,9 @@ class WardGridQuadrature::Pixel {
   void pieces(int x, int y, double cuts, const Rgb& power) {
     const int n = std::clamp(static_cast<int>(std::ceil(cuts)), 1, q_.max_split_);
     const Rgb share = power / double(n * n);
-    const Eigen::Matrix3d spread =
-        EnvPyramid::texel_spread(x, y, env_.width(0), env_.height(0)) / double(n * n);
-    for_each_texel_piece(x, y, env_.width(0), env_.height(0), n,
-                         [&](const Vec3& w) { emit(frame_.to_local(w), share, spread); });
+    const TexelFrame t = env_.frame_of_texel(x, y);
+    const Eigen::Matrix3d spread = EnvPyramid::texel_spread(t) / double(n * n);
+    for_each_texel_piece(t, n, [&](const Vec3& w) { emit(frame_.to_local(w), share, spread); });
   }
 
   // A hot texel: cut where a window twice the lobes' reaches it, whole out to four times it.
@@ -230,7 +229,7 @@ class WardGridQuadrature::Pixel {
     const double n = cuts(box, 4 * q_.reach2_, q_.hot_steps_);
     if (n <= 1)
       return emit(centroid, t.radiance * t.solid_angle,
-                  EnvPyramid::texel_spread(t.x, t.y, env_.width(0), env_.height(0)));
+                  EnvPyramid::texel_spread(env_.frame_of_texel(t.x, t.y)));
     pieces(t.x, t.y, n, t.radiance * t.solid_angle);
   }
 
