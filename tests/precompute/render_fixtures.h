@@ -68,6 +68,13 @@ inline Renderer reference_renderer(const EnvMap& env, const Scene& scene, int re
   return Renderer(env, scene, resolution, o);
 }
 
+// The Ward lobes that bend: the anisotropic settings and the sliver 0.5 x 0.005.
+inline std::vector<AccuracySetting> bending_ward_settings() {
+  std::vector<AccuracySetting> settings = anisotropic_settings();
+  settings.push_back(sliver_setting());
+  return settings;
+}
+
 // The target: the error at most a tenth of the change a 10% step makes, for every
 // parameter of the setting.
 inline void expect_a_tenth_of_a_step(const std::vector<AccuracyResult>& results,

@@ -17,8 +17,7 @@ TEST(WardGrid, ErrorIsATenthOfATenPercentStep) {
   const Scene sphere = Scene::sphere();
   Renderer renderer(interior(), sphere, 16);
   Renderer reference = reference_renderer(interior(), sphere, 16);
-  std::vector<AccuracySetting> settings = anisotropic_settings();
-  settings.push_back(sliver_setting());
+  std::vector<AccuracySetting> settings = bending_ward_settings();
   for (const AccuracySetting& s : accuracy_settings())
     if (s.model == ModelId::ward) settings.push_back(s);
   for (const AccuracySetting& s : settings) {
