@@ -286,6 +286,13 @@ TEST(CliValidate, NamesAMissingEnvironmentMap) {
   EXPECT_FALSE(fs::exists(out)) << "a failed run leaves nothing behind";
 }
 
+TEST(CliValidate, NamesAMissingReferenceMap) {
+  const fs::path out = scratch("_reference");
+  expect_one_error("--reference /nonexistent/reference.exr --out " + out.string(),
+                   "/nonexistent/reference.exr");
+  EXPECT_FALSE(fs::exists(out)) << "a failed run leaves nothing behind";
+}
+
 TEST(CliValidate, NamesABadDatabase) {
   const fs::path out = scratch("_db");
   expect_one_error("--db /nonexistent/db --out " + out.string(), "/nonexistent/db");
