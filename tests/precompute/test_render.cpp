@@ -2,6 +2,8 @@
 // thread counts, self-shadowing on a concave mesh, and the accuracy ratio of every model.
 #include "render_fixtures.h"
 
+#include "every_model.h"
+
 #include <brdfnav/precompute/render_accuracy.h>
 #include <gtest/gtest.h>
 
@@ -338,17 +340,17 @@ TEST(Render, ImagesAreThoseOfThisRevision) {
           << references[k].name << " channel " << c << ": " << std::setprecision(10) << got[k][c];
 }
 
-class Accuracy : public ::testing::TestWithParam<ModelId> {};
+class Accuracy : public ::testing::TestWithParam<ModelInfo> {};
 
 // The target at a small size: the renderer's error is at most a tenth of the change a 10%
 // parameter step makes, at every setting and for every parameter.
 TEST_P(Accuracy, ErrorIsATenthOfATenPercentStep) {
   const Scene sphere = Scene::sphere();
-  const int res = GetParam() == ModelId::he ? 16 : 24;
+  const int res = GetParam().id == ModelId::he ? 16 : 24;
   Renderer renderer(interior(), sphere, res);
   Renderer reference = reference_renderer(interior(), sphere, res);
   for (const AccuracySetting& s : accuracy_settings())
-    if (s.model == GetParam())
+    if (s.model == GetParam().id)
       expect_a_tenth_of_a_step(measure_accuracy(renderer, reference, s), s.name);
 }
 
@@ -364,10 +366,21 @@ TEST(AnisotropicAccuracy, WardLobesThatBend) {
     expect_a_tenth_of_a_step(measure_accuracy(renderer, reference, s), s.name);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryModel, Accuracy,
-                         ::testing::Values(ModelId::blinn_phong, ModelId::ward,
-                                           ModelId::cook_torrance, ModelId::lafortune, ModelId::he),
-                         [](const auto& info) { return std::string(model_info(info.param).name); });
+INSTANTIATE_TEST_SUITE_P(EveryModel, Accuracy, every_model(), model_test_name);
+
+// The settings the Accuracy suite, the revision's reference values and `bench render` measure:
+// a smooth, a medium and a rough lobe of every registered model, so a new model is measured too.
+TEST(AccuracySettings, ASmoothAMediumAndARoughLobeOfEveryModel) {
+  for (const ModelInfo& info : models()) {
+    std::vector<std::string> names;
+    for (const AccuracySetting& s : accuracy_settings()) {
+      if (s.model != info.id) continue;
+      names.push_back(s.name);
+      EXPECT_EQ(s.params.size(), info.params.size()) << info.name << " " << s.name;
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"smooth", "medium", "rough"})) << info.name;
+  }
+}
 
 }  // namespace
 }  // namespace brdfnav
