@@ -3,10 +3,9 @@
 namespace brdfnav {
 
 namespace {
-// He's lobe has a mirror term; the others do not. Detected from the type, not registered.
 template <typename L>
 Rgb lobe_mirror(const L& lobe, const Vec3& wo) {
-  if constexpr (requires { lobe.mirror_weight(wo); }) {
+  if constexpr (MirrorLobe<L>) {
     return lobe.mirror_weight(wo);
   } else {
     return Rgb::Zero();

@@ -9,7 +9,7 @@ namespace {
 
 template <typename L>
 constexpr ModelInfo info_of(ModelId id) {
-  return {id, L::kName, L::kTitle, L::kParams, requires(const L& l) { l.mirror_weight(Vec3{}); }};
+  return {id, L::kName, L::kTitle, L::kParams, MirrorLobe<L>};
 }
 
 template <std::size_t... I>
@@ -22,17 +22,20 @@ constexpr auto kModels = build_table(std::make_index_sequence<kModelCount>{});
 template <std::size_t... I>
 Lobe make_lobe_impl(std::size_t index, std::span<const double> p, std::index_sequence<I...>) {
   using Factory = Lobe (*)(std::span<const double>);
-  static constexpr Factory factories[] = {+[](std::span<const double> q) {
-    return Lobe(std::in_place_index<I>, q);
-  }...};
+  static constexpr Factory factories[] = {
+      +[](std::span<const double> q) { return Lobe(std::in_place_index<I>, q); }...};
   return factories[index](p);
 }
 
 }  // namespace
 
-std::span<const ModelInfo> models() { return kModels; }
+std::span<const ModelInfo> models() {
+  return kModels;
+}
 
-const ModelInfo& model_info(ModelId id) { return kModels[static_cast<std::size_t>(id)]; }
+const ModelInfo& model_info(ModelId id) {
+  return kModels[static_cast<std::size_t>(id)];
+}
 
 const ModelInfo* find_model(std::string_view name) {
   for (const ModelInfo& m : kModels)

@@ -89,11 +89,6 @@ Values<N> weighted(const Rgb& power, const Values<N>& k) {
   return power.replicate<N / 3, 1>() * k;
 }
 
-// Whether a lobe is the same in every channel (all but He's): its kernel is then a double, which
-// the quadrature sums a third as often as an Rgb.
-template <typename L>
-constexpr bool kGreyLobe = !std::is_same_v<L, He>;
-
 // A lobe seen from one wo: L::Bound where the lobe computes its wo terms once (Ward, He), else
 // the lobe and wo.
 template <typename L>
@@ -114,7 +109,7 @@ auto bind_wo(const L& lobe, const Vec3& wo) {
 // lobes, an Rgb otherwise.
 template <typename L>
 struct LobeKernel {
-  using Value = std::conditional_t<kGreyLobe<L>, double, Rgb>;
+  using Value = std::conditional_t<GreyLobe<L>, double, Rgb>;
   using Bound = decltype(bind_wo(std::declval<const L&>(), Vec3()));
   LobeKernel(const L& lobe, const Frame& frame, const Vec3& wo)
       : lobe(bind_wo(lobe, wo)), frame(frame) {}
@@ -125,7 +120,7 @@ struct LobeKernel {
     if (wi.z() <= 0) return zero<Value>();
     if constexpr (requires { lobe.eval_cos(wi); })
       return lobe.eval_cos(wi);
-    else if constexpr (kGreyLobe<L>)
+    else if constexpr (GreyLobe<L>)
       return lobe.eval(wi)[0] * wi.z();
     else
       return lobe.eval(wi) * wi.z();

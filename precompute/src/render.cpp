@@ -176,8 +176,7 @@ struct Renderer::Impl {
         any, p, s,
         [&](const Frame& frame, const Vec3& wo) { return LobeKernel<L>(lobe, frame, wo); },
         [&](Rgb& sum, const Vec3& wo) {
-          if constexpr (requires { lobe.mirror_weight(wo); })
-            sum += lobe.mirror_weight(wo) * (*mirrored)[i];
+          if constexpr (MirrorLobe<L>) sum += lobe.mirror_weight(wo) * (*mirrored)[i];
         });
   }
 
@@ -192,7 +191,7 @@ struct Renderer::Impl {
           return FresnelBatchKernel<L>(lobe, params, frame, wo);
         },
         [&](BatchValue& sum, const Vec3& wo) {
-          if constexpr (requires { lobe.mirror_weight(wo); })
+          if constexpr (MirrorLobe<L>)
             for (std::size_t k = 0; k < params.size(); ++k) {
               L each = lobe;
               each.*kFresnelParameter<L> = params[k];
@@ -235,7 +234,7 @@ struct Renderer::Impl {
   // specular() of each of `lobe` with kFresnelParameter = params[k], in one pass.
   template <typename L>
   std::vector<Image> batch_images(const L& lobe, std::span<const double> params) {
-    if constexpr (std::is_same_v<L, He>) compute_mirror_lookups();
+    if constexpr (MirrorLobe<L>) compute_mirror_lookups();
     const auto values = pixel_values<BatchValue>(
         [&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
           return batch_pixel(lobe, params, p, i, s);
@@ -278,7 +277,8 @@ const Image& Renderer::diffuse() {
 }
 
 void Renderer::prepare(const Lobe& lobe) {
-  if (std::holds_alternative<He>(lobe)) impl_->compute_mirror_lookups();
+  if (std::visit([](const auto& l) { return MirrorLobe<std::decay_t<decltype(l)>>; }, lobe))
+    impl_->compute_mirror_lookups();
 }
 
 Image Renderer::specular(const Lobe& lobe) {

@@ -12,6 +12,7 @@ namespace brdfnav {
 struct BlinnPhong {
   static constexpr std::string_view kName = "blinn_phong";
   static constexpr std::string_view kTitle = "Blinn-Phong";
+  static constexpr bool kGrey = true;  // eval() is the same in every channel
   static constexpr std::array<ParamSpec, 1> kParams{{
       {"n", "1", "exponent of cos(theta_h); larger is sharper", 0.0, 1e6, 100.0, 2.0, 80000.0, 15,
        Scale::log},

@@ -9,6 +9,7 @@
 #include <brdfnav/core/lafortune.h>
 #include <brdfnav/core/ward.h>
 
+#include <concepts>
 #include <optional>
 #include <variant>
 
@@ -16,6 +17,22 @@ namespace brdfnav {
 
 // Alternatives are in ModelId order (models.h).
 using Lobe = std::variant<BlinnPhong, Ward, CookTorrance, Lafortune, He>;
+
+// A lobe with a mirror (delta) term (He's), whose reflectance at wo is mirror_weight(wo).
+// Detected from the type, not registered: the closure samples it, the registry reports it and the
+// renderer adds it as a mirror lookup.
+template <typename L>
+concept MirrorLobe = requires(const L& lobe, const Vec3& wo) {
+  { lobe.mirror_weight(wo) } -> std::convertible_to<Rgb>;
+};
+
+// A lobe that declares eval() the same in every channel (L::kGrey; all but He's). The renderer
+// then sums doubles instead of Rgb; a lobe that does not say so is rendered in colour, slower but
+// never wrong.
+template <typename L>
+concept GreyLobe = requires {
+  requires L::kGrey;
+};
 
 struct BsdfSample {
   Vec3 wi;     // sampled incident direction, local frame

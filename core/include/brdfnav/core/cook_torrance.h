@@ -13,6 +13,7 @@ namespace brdfnav {
 struct CookTorrance {
   static constexpr std::string_view kName = "cook_torrance";
   static constexpr std::string_view kTitle = "Cook-Torrance";
+  static constexpr bool kGrey = true;  // eval() is the same in every channel
   static constexpr std::array<ParamSpec, 2> kParams{{
       {"f0", "1", "Fresnel reflectance at normal incidence (Schlick)", 0.0, 1.0, 0.04, 0.01, 1.0,
        11, Scale::log},

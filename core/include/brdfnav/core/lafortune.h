@@ -15,16 +15,15 @@ namespace brdfnav {
 struct Lafortune {
   // Dense around cz = 1/sqrt(3), where a cos^n lobe around the mirror direction sits and where
   // the paper (Figure 9) finds almost all of the visual change at large n.
-  static constexpr std::array<double, 14> kCzNodes{0.0,   0.3,    0.45,  0.51, 0.54,
-                                                   0.56,  0.57,   0.57735, 0.585, 0.6,
-                                                   0.63,  0.7,    0.82,  1.0};
+  static constexpr std::array<double, 14> kCzNodes{0.0,     0.3,   0.45, 0.51, 0.54, 0.56, 0.57,
+                                                   0.57735, 0.585, 0.6,  0.63, 0.7,  0.82, 1.0};
   static constexpr std::string_view kName = "lafortune";
   static constexpr std::string_view kTitle = "Lafortune";
+  static constexpr bool kGrey = true;  // eval() is the same in every channel
   static constexpr std::array<ParamSpec, 2> kParams{{
       {"cz", "1", "z weight of the lobe axis; 1/sqrt(3) is a Phong lobe around the mirror", 0.0,
        1.0, 0.57735026918962573, 0.0, 1.0, 14, Scale::linear, kCzNodes},
-      {"n", "1", "lobe exponent; larger is sharper", 0.0, 1e6, 100.0, 2.0, 16384.0, 13,
-       Scale::log},
+      {"n", "1", "lobe exponent; larger is sharper", 0.0, 1e6, 100.0, 2.0, 16384.0, 13, Scale::log},
   }};
 
   double cz, n, cxy, inv_max_c;

@@ -13,6 +13,7 @@ namespace brdfnav {
 struct Ward {
   static constexpr std::string_view kName = "ward";
   static constexpr std::string_view kTitle = "Ward (anisotropic)";
+  static constexpr bool kGrey = true;  // eval() is the same in every channel
   static constexpr std::array<ParamSpec, 2> kParams{{
       {"alpha_x", "1", "RMS slope along the tangent x", 1e-4, 1.0, 0.1, 0.005, 0.5, 15, Scale::log},
       {"alpha_y", "1", "RMS slope along the bitangent y", 1e-4, 1.0, 0.1, 0.005, 0.5, 15,
