@@ -11,15 +11,31 @@
 namespace brdfnav::test {
 
 // Every entry point after brdfnav_abi_version, by its name without the brdfnav_ prefix.
-#define BRDFNAV_ENTRY_POINTS(X)                                                                \
-  X(geterror)                                                                                  \
-  X(model_count)                                                                               \
-  X(get_model)                                                                                 \
-  X(find_model)                                                                                \
-  X(get_param) X(closure_create) X(closure_load) X(closure_destroy) X(closure_model)           \
-      X(closure_colorspace) X(closure_eval) X(closure_sample) X(closure_pdf) X(navigator_open) \
-          X(navigator_close) X(navigator_neighbors) X(navigator_neighbors_load)                \
-              X(navigator_gallery) X(neighbors_count) X(neighbors_get) X(neighbors_free)
+// One entry point a line, which clang-format would run together.
+// clang-format off
+#define BRDFNAV_ENTRY_POINTS(X) \
+  X(geterror) \
+  X(model_count) \
+  X(get_model) \
+  X(find_model) \
+  X(get_param) \
+  X(closure_create) \
+  X(closure_load) \
+  X(closure_destroy) \
+  X(closure_model) \
+  X(closure_colorspace) \
+  X(closure_eval) \
+  X(closure_sample) \
+  X(closure_pdf) \
+  X(navigator_open) \
+  X(navigator_close) \
+  X(navigator_neighbors) \
+  X(navigator_neighbors_load) \
+  X(navigator_gallery) \
+  X(neighbors_count) \
+  X(neighbors_get) \
+  X(neighbors_free)
+// clang-format on
 
 struct Api {
 #define BRDFNAV_DECLARE(name) decltype(&::brdfnav_##name) name = nullptr;
