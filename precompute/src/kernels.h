@@ -144,7 +144,8 @@ struct LobeKernel {
 };
 
 // The parameter of the lobes that a batch rendered together varies: the one the Fresnel factor
-// alone depends on (He's eta, Cook-Torrance's f0), or none.
+// alone depends on (He's eta, Cook-Torrance's f0), or none. A lobe that names one needs
+// bind(wo).eval_fresnel() and an operator== (shares_quadrature() compares the rest with it).
 template <typename L>
 inline constexpr double L::*kFresnelParameter = nullptr;
 template <>

@@ -293,11 +293,20 @@ Image Renderer::specular(const Lobe& lobe) {
 }
 
 bool shares_quadrature(const Lobe& a, const Lobe& b) {
-  if (const He* ha = std::get_if<He>(&a), *hb = std::get_if<He>(&b); ha && hb)
-    return ha->sigma == hb->sigma && ha->tau == hb->tau;
-  if (const auto* ca = std::get_if<CookTorrance>(&a), *cb = std::get_if<CookTorrance>(&b); ca && cb)
-    return ca->m == cb->m;
-  return false;
+  if (a.index() != b.index()) return false;
+  return std::visit(
+      [&](const auto& lobe_a) {
+        using L = std::decay_t<decltype(lobe_a)>;
+        if constexpr (kFresnelParameter<L> == nullptr) {
+          return false;
+        } else {
+          L b_at_a =
+              std::get<L>(b);  // b with a's Fresnel parameter: equal when nothing else differs
+          b_at_a.*kFresnelParameter<L> = lobe_a.*kFresnelParameter<L>;
+          return b_at_a == lobe_a;
+        }
+      },
+      a);
 }
 
 std::vector<std::vector<std::size_t>> quadrature_groups(std::span<const Lobe> lobes,

@@ -114,6 +114,9 @@ TEST(Render, HeLobesAlongEtaRenderTogetherToTheBit) {
   EXPECT_TRUE(shares_quadrature(lobes[0], lobes[1]));
   EXPECT_FALSE(shares_quadrature(lobes[0], lobes[2]));
   EXPECT_FALSE(shares_quadrature(lobes[0], lobes[4]));
+  EXPECT_FALSE(
+      shares_quadrature(lobes[0], make_lobe(ModelId::he, std::vector<double>{0.3, 7, 1.2})));
+  EXPECT_FALSE(shares_quadrature(lobes[2], lobes[2]));  // Ward has no Fresnel parameter
   Renderer together(interior(), sphere, 16), alone(interior(), sphere, 16);
   const std::vector<Image> images = together.specular(lobes);
   ASSERT_EQ(images.size(), lobes.size());

@@ -23,6 +23,7 @@ struct CookTorrance {
   double f0, m;
 
   explicit CookTorrance(std::span<const double> p) : f0(p[0]), m(p[1]) {}
+  bool operator==(const CookTorrance&) const = default;
 
   Rgb eval(const Vec3& wi, const Vec3& wo) const {
     const std::optional<Terms> t = terms(wi, wo);

@@ -25,6 +25,7 @@ struct He {
   double sigma, tau, eta;
 
   explicit He(std::span<const double> p) : sigma(p[0]), tau(p[1]), eta(p[2]) {}
+  bool operator==(const He&) const = default;
 
   // The factors of eval() that depend on one direction alone.
   struct DirectionTerms {

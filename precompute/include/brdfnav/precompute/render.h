@@ -95,8 +95,8 @@ class Renderer {
 };
 
 // Whether the renderer integrates the two lobes over the same nodes at every pixel and can
-// render them together: He lobes that differ in eta alone, Cook-Torrance lobes in f0 alone (the
-// Fresnel factor is all that changes).
+// render them together: lobes of one model that differ in its Fresnel parameter alone (He's eta,
+// Cook-Torrance's f0; kernels.h), the one factor that changes.
 bool shares_quadrature(const Lobe& a, const Lobe& b);
 // The lobes' indices in groups that shares_quadrature() with their first, of at most max_size,
 // in the order of their first indices.
