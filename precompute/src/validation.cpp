@@ -186,6 +186,25 @@ double mean_luminance(const Image& image) {
   return sum / double(count);
 }
 
+EnvLuminance env_luminance(const EnvMap& env) {
+  EnvLuminance l;
+  double weighted = 0, weights = 0;
+  for (int y = 0; y < env.height(); ++y) {
+    // Every texel of a row spans the same solid angle, in proportion to sin(theta) at its centre.
+    const double weight = std::sin(kPi * (y + 0.5) / env.height());
+    double row = 0;
+    for (int x = 0; x < env.width(); ++x) {
+      const double y_lum = luminance(env.texel(x, y));
+      row += y_lum;
+      l.peak = std::max(l.peak, y_lum);
+    }
+    weighted += weight * row;
+    weights += weight * env.width();
+  }
+  l.mean = weighted / weights;
+  return l;
+}
+
 double brdf_distance(const Material& a, const Material& b) {
   const Closure fa = make_closure(a), fb = make_closure(b);
   const FitQuadrature qa = make_fit_quadrature(fa.lobe(), kBrdfQuadratureWo, kBrdfQuadratureWi);
@@ -267,6 +286,7 @@ PellaciniStudy pellacini_study(Renderer& renderer) {
   }
   const std::vector<Image> images = render_all(renderer, samples);
   study.white_y = mean_luminance(renderer.diffuse());
+  study.env = env_luminance(renderer.env());
 
   std::vector<double> lab, brdf;
   for (std::size_t i = 1; i < samples.size(); ++i) {

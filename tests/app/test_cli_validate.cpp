@@ -58,6 +58,9 @@ void check_pellacini(const YAML::Node& f, const std::string& map) {
         << map << m;
   }
   EXPECT_TRUE(f["goal_holds"].IsScalar()) << map;
+  const double peak = f["env_luminance"]["peak"].as<double>();
+  EXPECT_GE(peak, f["env_luminance"]["mean"].as<double>()) << map;
+  EXPECT_GT(f["env_luminance"]["mean"].as<double>(), 0) << map;
   // Holds at 24 x 24 already, under each map: the cube root straightens the curve compared with
   // plain RGB.
   EXPECT_GT(f["metrics"]["cube_root"]["r2"].as<double>(), f["metrics"]["rgb"]["r2"].as<double>())
@@ -70,6 +73,13 @@ void check_fig2(const YAML::Node& f) {
   ASSERT_TRUE(f["other_envs"].IsMap());
   EXPECT_EQ(f["other_envs"].size(), 2u);
   for (const char* map : {"forest", "courtyard"}) check_pellacini(f["other_envs"][map], map);
+  // Blender's maps as `oiiotool --stats` reads them: interior's lamps reach about 34,000 against
+  // a mean near 1, courtyard's brightest sky about 55.
+  auto range = [](const YAML::Node& m) {
+    return m["env_luminance"]["peak"].as<double>() / m["env_luminance"]["mean"].as<double>();
+  };
+  EXPECT_GT(range(f), 1e4);
+  EXPECT_LT(range(f["other_envs"]["courtyard"]), 1e3);
   // The stimuli are the same under every map, so the BRDF-space curve is too.
   EXPECT_EQ(f["other_envs"]["forest"]["metrics"]["brdf_l2"]["r2"].as<double>(),
             f["metrics"]["brdf_l2"]["r2"].as<double>());

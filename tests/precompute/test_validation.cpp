@@ -50,6 +50,26 @@ TEST(Validation, BrdfDistanceIsASymmetricMetricOnWardLobes) {
             5 * brdf_distance(ward_sample(0.1), ward_sample(0.2)));
 }
 
+// A map of 8 x 4 grey texels of luminance 1 with one of 9: the mean weights each row by the solid
+// angle of its texels, sin(theta) at the row's centre, theta = (y + 1/2) pi / 4.
+TEST(Validation, EnvLuminanceIsThePeakAndTheSolidAngleMean) {
+  auto map_with_hot_texel = [](int row) {
+    std::vector<float> rgb(8 * 4 * 3, 1.0f);
+    for (int c = 0; c < 3; ++c) rgb[3 * (row * 8 + 5) + c] = 9.0f;
+    return EnvMap(8, 4, std::move(rgb), "hot texel");
+  };
+  double weights = 0;
+  for (int y = 0; y < 4; ++y) weights += 8 * std::sin(kPi * (y + 0.5) / 4);
+  for (int row : {0, 1}) {
+    const EnvLuminance l = env_luminance(map_with_hot_texel(row));
+    EXPECT_NEAR(l.peak, 9.0, 1e-6);
+    EXPECT_NEAR(l.mean, 1 + 8 * std::sin(kPi * (row + 0.5) / 4) / weights, 1e-6) << row;
+  }
+  const EnvLuminance flat_map = env_luminance(EnvMap(4, 2, std::vector<float>(24, 2.5f), "flat"));
+  EXPECT_NEAR(flat_map.peak, 2.5, 1e-6);
+  EXPECT_NEAR(flat_map.mean, 2.5, 1e-6);
+}
+
 TEST(Validation, LineFitScaleAndVariation) {
   const std::vector<double> x{0, 1, 2, 3}, y{1, 3, 5, 7};
   const LineFit f = fit_line(x, y);

@@ -60,6 +60,15 @@ std::vector<double> equal_steps(std::span<const double> x, std::span<const doubl
 // Isotropic Ward with alpha_x = alpha_y = alpha and grey rho_d = rho_s = 0.1, as in the figures.
 Material ward_sample(double alpha);
 
+// Rec. 709 luminance of an environment map: its brightest texel, and its mean over the sphere of
+// directions (each texel weighted by its solid angle). Their ratio is what bends Figure 2's
+// curve: the sharper a lobe, the more it shows a small, very bright source as a small, very bright
+// spot (docs/VALIDATION.md).
+struct EnvLuminance {
+  double peak = 0, mean = 0;
+};
+EnvLuminance env_luminance(const EnvMap& env);
+
 struct CumulativeCurve {
   std::string metric;          // cube_root, cielab, rgb, brdf_l2
   std::vector<double> values;  // cumulative distance at each stimulus, from 0
@@ -70,6 +79,7 @@ struct PellaciniStudy {
   std::vector<double> d;                // distinctness of image d = 1 - alpha, 0.80 .. 0.99
   double white_y = 0;                   // the CIELAB white (mean_luminance of the diffuse image)
   std::vector<CumulativeCurve> curves;  // cube_root, cielab, rgb, brdf_l2, in that order
+  EnvLuminance env;                     // of the renderer's map
 };
 
 // 11 stimuli evenly spaced in d from 0.8 to 0.99; the cumulative distance of successive stimuli
