@@ -300,8 +300,8 @@ bool shares_quadrature(const Lobe& a, const Lobe& b) {
         if constexpr (kFresnelParameter<L> == nullptr) {
           return false;
         } else {
-          L b_at_a =
-              std::get<L>(b);  // b with a's Fresnel parameter: equal when nothing else differs
+          // b with a's Fresnel parameter: equal to a when nothing else differs.
+          L b_at_a = std::get<L>(b);
           b_at_a.*kFresnelParameter<L> = lobe_a.*kFresnelParameter<L>;
           return b_at_a == lobe_a;
         }
