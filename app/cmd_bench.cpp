@@ -12,6 +12,8 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <optional>
+#include <span>
 
 namespace brdfnav::cli {
 
@@ -44,25 +46,46 @@ double time_image(Renderer& renderer, const AccuracySetting& s, int repeats) {
   return ms_per_image(repeats, 1, [&] { renderer.specular(lobe); });
 }
 
-// The precompute's He images along eta (He::kEtaNodes at each He setting's sigma and tau): ms
-// per image rendered alone and rendered together in one pass (Renderer::specular of a span).
-void eta_batch_rows(Renderer& renderer, int repeats) {
-  std::printf("\n| he setting | ms per image, 5 etas alone | ... in one pass | ratio |\n");
-  std::printf("|---|---|---|---|\n");
-  auto ms_of = [&](auto&& render) {
-    return ms_per_image(repeats, double(He::kEtaNodes.size()), render);
-  };
-  for (const AccuracySetting& s : accuracy_settings()) {
-    if (s.model != ModelId::he) continue;
+// The parameter of `s`'s model that the renderer batches along (its Fresnel parameter: He's eta,
+// Cook-Torrance's f0), found as the one whose change alone keeps two lobes in one quadrature
+// (shares_quadrature), with the table's first kBatch grid nodes of it; none for other models.
+constexpr std::size_t kBatch = 5;  // the lobes one pass takes (kFresnelBatch)
+std::optional<std::pair<std::size_t, std::vector<Lobe>>> fresnel_batch(const AccuracySetting& s) {
+  const std::span<const ParamSpec> specs = model_info(s.model).params;
+  for (std::size_t k = 0; k < specs.size(); ++k) {
     std::vector<Lobe> lobes;
-    for (double eta : He::kEtaNodes)
-      lobes.push_back(make_lobe(s.model, std::vector<double>{s.params[0], s.params[1], eta}));
+    for (double node : grid_nodes(specs[k])) {
+      if (lobes.size() == kBatch) break;
+      std::vector<double> p = s.params;
+      p[k] = node;
+      lobes.push_back(make_lobe(s.model, p));
+    }
+    if (shares_quadrature(lobes[0], lobes[1])) return std::pair{k, std::move(lobes)};
+  }
+  return std::nullopt;
+}
+
+// The precompute's images along each model's Fresnel parameter (fresnel_batch): ms per image
+// rendered alone and rendered together in one pass (Renderer::specular of a span).
+void fresnel_batch_rows(Renderer& renderer, int repeats, const std::string& model) {
+  std::printf(
+      "\n| setting | batched parameter | ms per image, alone | ... in one pass | ratio |\n");
+  std::printf("|---|---|---|---|---|\n");
+  for (const AccuracySetting& s : accuracy_settings()) {
+    const ModelInfo& info = model_info(s.model);
+    if (!model.empty() && model != info.name) continue;
+    const auto batch = fresnel_batch(s);
+    if (!batch) continue;
+    const auto& [k, lobes] = *batch;
+    auto ms_of = [&](auto&& render) { return ms_per_image(repeats, double(lobes.size()), render); };
     renderer.prepare(lobes.front());
     const double alone = ms_of([&] {
       for (const Lobe& l : lobes) renderer.specular(l);
     });
     const double together = ms_of([&] { renderer.specular(lobes); });
-    std::printf("| %s | %.1f | %.1f | %.2f |\n", s.name.c_str(), alone, together, together / alone);
+    std::printf("| %s %s | %s (%zu nodes) | %.1f | %.1f | %.2f |\n", std::string(info.name).c_str(),
+                s.name.c_str(), std::string(info.params[k].name).c_str(), lobes.size(), alone,
+                together, together / alone);
     std::fflush(stdout);
   }
 }
@@ -130,7 +153,7 @@ void run_render_bench(const BenchOptions& o) {
       if (wanted(s)) row(s);
     if (wanted(sliver_setting())) row(sliver_setting());
   }
-  if (o.model.empty() || o.model == "he") eta_batch_rows(renderer, o.repeats);
+  fresnel_batch_rows(renderer, o.repeats, o.model);
   if (o.model.empty() || o.model == "ward") ward_grid_rows(renderer, o.repeats);
   std::printf("\n| model | mean ms per image (smooth, medium, rough) |\n|---|---|\n");
   for (const auto& [model, sum] : total_ms)

@@ -1,10 +1,12 @@
 // `brdfnav render` and `brdfnav distance` end to end: the images, the metric, and failures that
-// leave nothing behind.
+// leave nothing behind; `brdfnav bench render`'s tables at a tiny size.
 #include "app/cli_runner.h"
 
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+
+#include <string>
 
 namespace brdfnav::test {
 namespace {
@@ -65,6 +67,21 @@ TEST(CliRender, DistanceRejectsMismatchedImages) {
   EXPECT_FALSE(r.err.empty());
   EXPECT_NE(run_cli("distance " + a.string() + " " + (dir.path / "none.exr").string()).exit_code,
             0);
+}
+
+// Each model's settings, and the batch rows for the models whose lobes the renderer batches along
+// their Fresnel parameter: Cook-Torrance along f0, He along eta, none for Ward (its grid instead).
+TEST(CliBenchRender, ReportsEveryModelAndTheFresnelBatches) {
+  const auto r = run_cli("bench render --res 8 --repeats 1 --no-accuracy");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* row : {"| blinn_phong | smooth |", "| ward | medium |", "| lafortune | rough |",
+                          "| cook_torrance smooth | f0 (5 nodes) |", "| he rough | eta (5 nodes) |",
+                          "| ward grid in one pass |"})
+    EXPECT_NE(r.out.find(row), std::string::npos) << row << "\n" << r.out;
+  const auto ward = run_cli("bench render --res 8 --repeats 1 --no-accuracy --model ward");
+  ASSERT_EQ(ward.exit_code, 0) << ward.err;
+  EXPECT_EQ(ward.out.find("(5 nodes)"), std::string::npos) << ward.out;
+  EXPECT_EQ(ward.out.find("| he |"), std::string::npos) << ward.out;
 }
 
 }  // namespace
