@@ -98,20 +98,26 @@ std::vector<EnvPyramid::HotGroup> EnvPyramid::group_hot_texels(int level) const 
   return groups;
 }
 
+double luminance_power(const EnvMap& env) {
+  double total = 0;
+  for (int y = 0; y < env.height(); ++y) {
+    const double texel_solid_angle =
+        lat_long_rect(0, 1, y, y + 1, env.width(), env.height()).solid_angle;
+    for (int x = 0; x < env.width(); ++x) total += luminance(env.texel(x, y)) * texel_solid_angle;
+  }
+  return total;
+}
+
 void EnvPyramid::build_texels(const EnvMap& env) {
   const int w = env.width(), h = env.height();
-  std::vector<double> row_solid_angle;  // of one texel of each row
-  double total = 0;
+  const double threshold = kHotFactor * luminance_power(env) / (4 * kPi);
   for (int y = 0; y < h; ++y) {
-    row_solid_angle.push_back(lat_long_rect(0, 1, y, y + 1, w, h).solid_angle);
-    for (int x = 0; x < w; ++x) total += luminance(env.texel(x, y)) * row_solid_angle[y];
-  }
-  const double threshold = kHotFactor * total / (4 * kPi);
-  for (int y = 0; y < h; ++y)
+    const double texel_solid_angle = lat_long_rect(0, 1, y, y + 1, w, h).solid_angle;
     for (int x = 0; x < w; ++x)
       if (threshold > 0 && luminance(env.texel(x, y)) > threshold)
         hot_.push_back({x, y, env.texel(x, y), lat_long_rect(x, x + 1, y, y + 1, w, h).centroid,
-                        row_solid_angle[y]});
+                        texel_solid_angle});
+  }
   // The brightest first, ties in map order: deterministic.
   std::stable_sort(hot_.begin(), hot_.end(), [](const HotTexel& a, const HotTexel& b) {
     return luminance(a.radiance) > luminance(b.radiance);

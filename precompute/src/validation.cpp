@@ -4,6 +4,8 @@
 #include <brdfnav/core/statistics.h>
 #include <brdfnav/precompute/fit.h>
 
+#include "env_pyramid.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -187,21 +189,9 @@ double mean_luminance(const Image& image) {
 }
 
 EnvLuminance env_luminance(const EnvMap& env) {
-  EnvLuminance l;
-  double weighted = 0, weights = 0;
-  for (int y = 0; y < env.height(); ++y) {
-    // Every texel of a row spans the same solid angle, in proportion to sin(theta) at its centre.
-    const double weight = std::sin(kPi * (y + 0.5) / env.height());
-    double row = 0;
-    for (int x = 0; x < env.width(); ++x) {
-      const double y_lum = luminance(env.texel(x, y));
-      row += y_lum;
-      l.peak = std::max(l.peak, y_lum);
-    }
-    weighted += weight * row;
-    weights += weight * env.width();
-  }
-  l.mean = weighted / weights;
+  EnvLuminance l{0, luminance_power(env) / (4 * kPi)};
+  for (int y = 0; y < env.height(); ++y)
+    for (int x = 0; x < env.width(); ++x) l.peak = std::max(l.peak, luminance(env.texel(x, y)));
   return l;
 }
 

@@ -50,20 +50,21 @@ TEST(Validation, BrdfDistanceIsASymmetricMetricOnWardLobes) {
             5 * brdf_distance(ward_sample(0.1), ward_sample(0.2)));
 }
 
-// A map of 8 x 4 grey texels of luminance 1 with one of 9: the mean weights each row by the solid
-// angle of its texels, sin(theta) at the row's centre, theta = (y + 1/2) pi / 4.
+// A map of 8 x 4 grey texels of luminance 1 with one of 9: the mean over the sphere weighs each
+// texel by its solid angle, (2 pi / 8) (cos theta0 - cos theta1) for the rows' band
+// [theta0, theta1] = [y, y + 1] pi / 4; the texels' solid angles add up to 4 pi.
 TEST(Validation, EnvLuminanceIsThePeakAndTheSolidAngleMean) {
   auto map_with_hot_texel = [](int row) {
     std::vector<float> rgb(8 * 4 * 3, 1.0f);
     for (int c = 0; c < 3; ++c) rgb[3 * (row * 8 + 5) + c] = 9.0f;
     return EnvMap(8, 4, std::move(rgb), "hot texel");
   };
-  double weights = 0;
-  for (int y = 0; y < 4; ++y) weights += 8 * std::sin(kPi * (y + 0.5) / 4);
   for (int row : {0, 1}) {
+    const double solid_angle =
+        2 * kPi / 8 * (std::cos(row * kPi / 4) - std::cos((row + 1) * kPi / 4));
     const EnvLuminance l = env_luminance(map_with_hot_texel(row));
     EXPECT_NEAR(l.peak, 9.0, 1e-6);
-    EXPECT_NEAR(l.mean, 1 + 8 * std::sin(kPi * (row + 0.5) / 4) / weights, 1e-6) << row;
+    EXPECT_NEAR(l.mean, 1 + 8 * solid_angle / (4 * kPi), 1e-6) << row;
   }
   const EnvLuminance flat_map = env_luminance(EnvMap(4, 2, std::vector<float>(24, 2.5f), "flat"));
   EXPECT_NEAR(flat_map.peak, 2.5, 1e-6);
