@@ -50,7 +50,11 @@ double time_image(Renderer& renderer, const AccuracySetting& s, int repeats) {
 // Cook-Torrance's f0), found as the one whose change alone keeps two lobes in one quadrature
 // (shares_quadrature), with the table's first kBatch grid nodes of it; none for other models.
 constexpr std::size_t kBatch = 5;  // the lobes one pass takes (kFresnelBatch)
-std::optional<std::pair<std::size_t, std::vector<Lobe>>> fresnel_batch(const AccuracySetting& s) {
+struct FresnelBatch {
+  std::size_t param;        // index into the model's parameter table
+  std::vector<Lobe> lobes;  // the setting's lobe at the parameter's first grid nodes
+};
+std::optional<FresnelBatch> fresnel_batch(const AccuracySetting& s) {
   const std::span<const ParamSpec> specs = model_info(s.model).params;
   for (std::size_t k = 0; k < specs.size(); ++k) {
     std::vector<Lobe> lobes;
@@ -60,7 +64,7 @@ std::optional<std::pair<std::size_t, std::vector<Lobe>>> fresnel_batch(const Acc
       p[k] = node;
       lobes.push_back(make_lobe(s.model, p));
     }
-    if (shares_quadrature(lobes[0], lobes[1])) return std::pair{k, std::move(lobes)};
+    if (shares_quadrature(lobes[0], lobes[1])) return FresnelBatch{k, std::move(lobes)};
   }
   return std::nullopt;
 }
@@ -76,7 +80,7 @@ void fresnel_batch_rows(Renderer& renderer, int repeats, const std::string& mode
     if (!model.empty() && model != info.name) continue;
     const auto batch = fresnel_batch(s);
     if (!batch) continue;
-    const auto& [k, lobes] = *batch;
+    const std::vector<Lobe>& lobes = batch->lobes;
     auto ms_of = [&](auto&& render) { return ms_per_image(repeats, double(lobes.size()), render); };
     renderer.prepare(lobes.front());
     const double alone = ms_of([&] {
@@ -84,8 +88,8 @@ void fresnel_batch_rows(Renderer& renderer, int repeats, const std::string& mode
     });
     const double together = ms_of([&] { renderer.specular(lobes); });
     std::printf("| %s %s | %s (%zu nodes) | %.1f | %.1f | %.2f |\n", std::string(info.name).c_str(),
-                s.name.c_str(), std::string(info.params[k].name).c_str(), lobes.size(), alone,
-                together, together / alone);
+                s.name.c_str(), std::string(info.params[batch->param].name).c_str(), lobes.size(),
+                alone, together, together / alone);
     std::fflush(stdout);
   }
 }
