@@ -48,8 +48,8 @@ double time_image(Renderer& renderer, const AccuracySetting& s, int repeats) {
 
 // The parameter of `s`'s model that the renderer batches along (its Fresnel parameter: He's eta,
 // Cook-Torrance's f0), found as the one whose change alone keeps two lobes in one quadrature
-// (shares_quadrature), with the table's first kBatch grid nodes of it; none for other models.
-constexpr std::size_t kBatch = 5;  // the lobes one pass takes (kFresnelBatch)
+// (shares_quadrature), with the table's first kFresnelBatch grid nodes of it (one pass); none
+// for other models.
 struct FresnelBatch {
   std::size_t param;        // index into the model's parameter table
   std::vector<Lobe> lobes;  // the setting's lobe at the parameter's first grid nodes
@@ -59,7 +59,7 @@ std::optional<FresnelBatch> fresnel_batch(const AccuracySetting& s) {
   for (std::size_t k = 0; k < specs.size(); ++k) {
     std::vector<Lobe> lobes;
     for (double node : grid_nodes(specs[k])) {
-      if (lobes.size() == kBatch) break;
+      if (lobes.size() == std::size_t(kFresnelBatch)) break;
       std::vector<double> p = s.params;
       p[k] = node;
       lobes.push_back(make_lobe(s.model, p));

@@ -5,6 +5,7 @@
 #include "vector_exp.h"
 
 #include <brdfnav/core/closure.h>
+#include <brdfnav/precompute/render.h>
 
 #include <array>
 #include <optional>
@@ -156,7 +157,6 @@ inline constexpr double CookTorrance::*kFresnelParameter<CookTorrance> = &CookTo
 // Lobes that differ in kFresnelParameter alone, at most kFresnelBatch of them, times the cosine:
 // lobe k in channels 3k..3k+2, the rest zero. Everything but the Fresnel factor is computed once
 // per direction; each lobe's channels equal LobeKernel's for it to the bit.
-inline constexpr int kFresnelBatch = 5;
 using BatchValue = Values<3 * kFresnelBatch>;
 template <typename L>
 struct FresnelBatchKernel {

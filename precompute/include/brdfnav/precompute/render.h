@@ -94,6 +94,10 @@ class Renderer {
   std::unique_ptr<Impl> impl_;
 };
 
+// The most lobes that Renderer::specular() of a span renders in one pass (kernels.h's
+// FresnelBatchKernel carries one lane per lobe).
+inline constexpr int kFresnelBatch = 5;
+
 // Whether the renderer integrates the two lobes over the same nodes at every pixel and can
 // render them together: lobes of one model that differ in its Fresnel parameter alone (He's eta,
 // Cook-Torrance's f0; kernels.h), the one factor that changes.
