@@ -18,9 +18,9 @@ Vec3 parse_direction(const std::string& text, const std::string& option) {
   if (!in || comma1 != ',' || comma2 != ',' || (in >> rest))
     throw std::runtime_error(option + ": expected three numbers x,y,z, got '" + text + "'");
   if (!v.allFinite()) throw std::runtime_error(option + ": components must be finite");
-  const double len = v.norm();
-  if (!(len > 1e-12)) throw std::runtime_error(option + ": direction has zero length");
-  return v / len;
+  const std::optional<Vec3> unit = unit_direction(v);
+  if (!unit) throw std::runtime_error(option + ": direction has zero length");
+  return *unit;
 }
 
 namespace {

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <memory>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -169,16 +170,16 @@ brdfnav_closure* new_closure(Material m) {
   return new brdfnav_closure{std::move(m), std::move(closure)};
 }
 
-// A unit vector from three doubles; stableNorm() so that huge or tiny inputs do not overflow.
+// A unit vector from three doubles.
 Vec3 direction(const double* w, const char* name) {
   require(w, name);
   const Vec3 v(w[0], w[1], w[2]);
   if (!v.allFinite())
     throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, std::string(name) + " is not finite");
-  const double length = v.stableNorm();
-  if (!(length > 0))
+  const std::optional<Vec3> unit = unit_direction(v);
+  if (!unit)
     throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, std::string(name) + " is the zero vector");
-  return v / length;
+  return *unit;
 }
 
 double unit_random(double u, const char* name) {

@@ -45,6 +45,20 @@ TEST(CliEval, BelowTheHorizonIsZero) {
   EXPECT_EQ(r.out, "0 0 0\n");
 }
 
+// Any finite non-zero vector is a direction: components near the ends of double's range must
+// neither overflow the length (1e300 squared is inf) nor read as zero.
+TEST(CliEval, NormalisesHugeAndTinyDirections) {
+  const auto unit = run_cli("eval --material ward --wi 0,0.5,1 --wo 0,0,1");
+  ASSERT_EQ(unit.exit_code, 0) << unit.err;
+  ASSERT_NE(unit.out, "0 0 0\n");
+  for (const char* wi : {"0,0.5e300,1e300", "0,0.5e-300,1e-300", "0,5e-14,1e-13"}) {
+    SCOPED_TRACE(wi);
+    const auto r = run_cli(std::string("eval --material ward --wi ") + wi + " --wo 0,0,1");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.out, unit.out);
+  }
+}
+
 TEST(CliEval, RejectsBadDirections) {
   for (const char* wi : {"0,0,0", "nan,0,1", "1,2", "1,2,3,4", "a,b,c", "inf,0,1"}) {
     SCOPED_TRACE(wi);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace brdfnav {
 
@@ -30,6 +31,14 @@ inline Vec3 reflect(const Vec3& w, const Vec3& n) {
 // Unit vector with polar angle given by (cos_theta, sin_theta) and azimuth phi around +z.
 inline Vec3 spherical_direction(double sin_theta, double cos_theta, double phi) {
   return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+}
+
+// `v` scaled to unit length, or nothing for the zero vector; `v` must be finite. stableNorm(), so
+// that components as large as 1e300 or as small as 1e-300 neither overflow nor vanish.
+inline std::optional<Vec3> unit_direction(const Vec3& v) {
+  const double length = v.stableNorm();
+  if (!(length > 0)) return std::nullopt;
+  return Vec3(v / length);
 }
 
 // Rec. 709 / sRGB-primaries luminance; used only to weigh sampling strategies.
