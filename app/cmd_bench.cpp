@@ -225,7 +225,7 @@ void add_bench_commands(CLI::App& app) {
   nav->add_option("--db", n->db, "Database directory")->required();
   nav->add_option("--radius", n->radius, "Radius eps")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(radius_validator());
   nav->add_option("--materials", n->materials, "Random materials per model")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));

@@ -19,6 +19,25 @@
 
 namespace brdfnav::cli {
 
+// CLI11's PositiveNumber lets NaN through (NaN <= 0 is false). Checked here as well as by the
+// navigator so that the error names the option, before the database is opened.
+const CLI::Validator& radius_validator() {
+  static const CLI::Validator validator(
+      [](std::string& text) -> std::string {
+        try {
+          std::size_t used = 0;
+          const double value = std::stod(text, &used);
+          if (used == text.size() && std::isfinite(value) && value >= kMinRadius) return "";
+        } catch (const std::exception&) {
+        }
+        char min[32];
+        std::snprintf(min, sizeof min, "%g", kMinRadius);
+        return "must be a finite distance of at least " + std::string(min) + ", got '" + text + "'";
+      },
+      "RADIUS");
+  return validator;
+}
+
 namespace {
 
 // Runs `body`, prefixing any failure with the option whose value caused it.
@@ -30,19 +49,6 @@ auto for_option(const char* option, Body&& body) {
     throw std::runtime_error(std::string(option) + ": " + e.what());
   }
 }
-
-// CLI11's PositiveNumber lets NaN through (NaN <= 0 is false).
-const CLI::Validator kPositiveFinite(
-    [](std::string& text) -> std::string {
-      try {
-        std::size_t used = 0;
-        const double value = std::stod(text, &used);
-        if (used == text.size() && std::isfinite(value) && value > 0) return "";
-      } catch (const std::exception&) {
-      }
-      return "must be a positive finite distance, got '" + text + "'";
-    },
-    "POSITIVE");
 
 std::vector<std::string> tab_choices() {
   std::vector<std::string> names;
@@ -83,7 +89,7 @@ void add_neighbors_command(CLI::App& app) {
   add_inputs(*cmd, *in);
   cmd->add_option("--radius,-r", *radius, "Distance eps (cube-root RMS metric units)")
       ->required()
-      ->check(kPositiveFinite);
+      ->check(radius_validator());
   cmd->add_option("--tab", *tab, "lobe, diffuse, specular, models, gallery or all")
       ->capture_default_str()
       ->check(CLI::IsMember(tab_choices()));
@@ -164,7 +170,7 @@ void add_variations_command(CLI::App& app) {
   add_inputs(*cmd, *in);
   cmd->add_option("--radius,-r", *radius, "Distance eps (cube-root RMS metric units)")
       ->required()
-      ->check(kPositiveFinite);
+      ->check(radius_validator());
   std::vector<std::string> tabs = tab_choices();
   tabs.pop_back();  // one tab per sheet
   cmd->add_option("--tab", *tab, "lobe, diffuse, specular, models or gallery")

@@ -3,10 +3,13 @@
 #include "commands.h"
 #include "progress.h"
 
+#include <brdfnav/core/atomic_file.h>
 #include <brdfnav/io/material_yaml.h>
 #include <brdfnav/precompute/render.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 namespace brdfnav::cli {
 
@@ -24,6 +27,15 @@ Scene load_scene(const SceneOptions& o) {
   return o.scene == "sphere" ? Scene::sphere() : Scene::load_obj(o.scene);
 }
 
+void check_output_file(const std::string& path, const std::string& option) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw std::runtime_error(option + " " + path + ": is a directory");
+  const AtomicOutput probe(path);  // removes its temporary file
+  if (!std::ofstream(probe.temp_path()))
+    throw std::runtime_error(option + " " + path + ": cannot create a file in its directory");
+}
+
 EnvMap load_env(const SceneOptions& o) {
   return EnvMap::load(o.env, EnvLoadOptions{o.sanitize_env});
 }
@@ -38,6 +50,8 @@ void add_render_commands(CLI::App& app) {
   add_scene_options(*render, *scene);
   render->add_option("--out,-o", *out, "Output OpenEXR file (written atomically)")->required();
   render->callback([=] {
+    check_exr_name(*out);
+    check_output_file(*out, "--out");
     const Material m = load_material(*material);
     const EnvMap env = load_env(*scene);
     const Scene geometry = load_scene(*scene);

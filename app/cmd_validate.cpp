@@ -10,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <type_traits>
@@ -40,9 +39,7 @@ void check_writable(const fs::path& dir) {
   if (ec || !fs::is_directory(dir))
     throw std::runtime_error("--out " + dir.string() + ": cannot create the directory" +
                              (ec ? ": " + ec.message() : ""));
-  const AtomicOutput probe(dir / "report.md");  // removes its temporary file
-  if (!std::ofstream(probe.temp_path()))
-    throw std::runtime_error("--out " + dir.string() + ": the directory is not writable");
+  check_output_file((dir / "report.md").string(), "--out");
 }
 
 // Runs one study with a line on stderr when it is done (they take seconds to minutes).

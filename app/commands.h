@@ -32,9 +32,16 @@ struct SceneOptions {
 };
 void add_scene_options(CLI::App& cmd, SceneOptions& options);
 
+// A navigation radius eps: a finite number of at least kMinRadius (brdfnav/navigator.h).
+const CLI::Validator& radius_validator();
+
 // "x,y,z" -> normalised vector; throws std::runtime_error naming `option` when it is not three
 // finite numbers or has zero length.
 Vec3 parse_direction(const std::string& text, const std::string& option);
+
+// Fails before any work when `path` cannot become an output file: it names a directory, or its
+// directory is missing or not writable. std::runtime_error naming `option` and the path.
+void check_output_file(const std::string& path, const std::string& option);
 
 EnvMap load_env(const SceneOptions& options);
 Scene load_scene(const SceneOptions& options);

@@ -5,6 +5,8 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace brdfnav {
@@ -97,6 +99,18 @@ void write_file_atomic(const std::filesystem::path& target, std::string_view con
   // The rename itself on disk.
   Fd dir{::open(directory_of(target).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)};
   if (dir.fd >= 0) ::fsync(dir.fd);
+}
+
+std::string read_file(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw std::runtime_error(name + ": is a directory");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw std::runtime_error(name + ": cannot open: " + std::strerror(errno));
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (file.bad()) throw std::runtime_error(name + ": cannot read");
+  return text.str();
 }
 
 }  // namespace brdfnav

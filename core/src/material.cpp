@@ -125,6 +125,13 @@ void validate(const Material& m) {
   check_colorspace(m.colorspace);
 }
 
+void require_render_colorspace(const Material& m) {
+  if (m.colorspace != kDefaultColorspace)
+    throw MaterialError("colorspace '" + m.colorspace + "': images and distances are computed in " +
+                        std::string(kDefaultColorspace) +
+                        " only (give rho_d and rho_s in it; colours are not converted)");
+}
+
 Closure make_closure(const Material& m) {
   validate(m);
   return Closure(make_lobe(m.model, m.params), m.rho_d, m.rho_s);

@@ -6,6 +6,7 @@
 #include <unistd.h>
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 
@@ -149,6 +150,15 @@ fs::path temp_beside(const fs::path& target) {
   return target.parent_path() / name;
 }
 
+// A sheet is written as PNG; under another extension it would pass for that format.
+void check_png_name(const std::string& path) {
+  std::string extension = fs::path(path).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".png")
+    throw ContactSheetError("cannot write contact sheet '" + path +
+                            "': a PNG file name must end in .png");
+}
+
 void write_atomic(const OIIO::ImageBuf& sheet, const std::string& path) {
   const fs::path target(path);
   const fs::path temp = temp_beside(target);
@@ -183,6 +193,7 @@ VariationGrid variation_grid(int variations) {
 SheetSize write_contact_sheet(const std::string& path, const SheetTile& centre,
                               const std::vector<SheetTile>& variations,
                               const SheetOptions& options) {
+  check_png_name(path);
   std::vector<const SheetTile*> tiles{&centre};
   for (const auto& tile : variations) tiles.push_back(&tile);
   check_input(tiles, options);

@@ -8,11 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -253,15 +250,11 @@ void check_parser_progress(const std::string& text, std::string_view source) {
 }
 
 std::string read_text(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw MaterialFileError(path.string() + ": is a directory, not a material file");
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw MaterialFileError(path.string() + ": cannot open: " + std::strerror(errno));
-  std::ostringstream text;
-  text << file.rdbuf();
-  if (file.bad()) throw MaterialFileError(path.string() + ": cannot read");
-  return text.str();
+  try {
+    return read_file(path);
+  } catch (const std::runtime_error& e) {
+    throw MaterialFileError(e.what());
+  }
 }
 
 }  // namespace

@@ -94,6 +94,7 @@ std::shared_ptr<const Image> Thumbnails::keep(Key key, std::shared_ptr<const Ima
 
 Image Thumbnails::render(const Material& m) const {
   validate(m);
+  require_render_colorspace(m);
   const ModelEmbedding* embedding = database_.embedding(m.model);
   if (!embedding)
     throw DatabaseError(database_.dir().string() + ": holds no model '" +

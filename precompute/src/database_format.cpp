@@ -74,6 +74,19 @@ YAML::Emitter& begin(YAML::Emitter& out) {
 
 }  // namespace
 
+namespace {
+// A YAML file of the database, parsed; DatabaseError naming it when it cannot be read.
+YAML::Node load_yaml(const std::string& file) {
+  std::string text;
+  try {
+    text = read_file(file);
+  } catch (const std::runtime_error& e) {
+    throw DatabaseError(e.what());
+  }
+  return YAML::Load(text);
+}
+}  // namespace
+
 // A required key of a manifest map, or a DatabaseError naming the file and the key.
 YAML::Node require(const YAML::Node& map, const std::string& key, const std::string& file) {
   const YAML::Node node = map[key];
@@ -198,7 +211,7 @@ Manifest read_manifest(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path))
     throw DatabaseError(file + ": no such file (not a brdfnav database, or an unfinished one)");
   try {
-    const YAML::Node root = YAML::LoadFile(file);
+    const YAML::Node root = load_yaml(file);
     Manifest m;
     m.format_version = require(root, "brdfnav_database", file).as<int>();
     if (m.format_version != kDatabaseFormatVersion)
@@ -235,7 +248,7 @@ ShardOrigin read_shard_origin(const std::filesystem::path& shard) {
   if (!std::filesystem::exists(file))
     throw DatabaseError(file + ": no such file (not a finished brdfnav shard)");
   try {
-    const YAML::Node root = YAML::LoadFile(file);
+    const YAML::Node root = db::load_yaml(file);
     ShardOrigin o;
     o.profile = db::require(root, "profile", file).as<std::string>();
     o.resolution = db::require(root, "resolution", file).as<int>();

@@ -4,6 +4,9 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <cctype>
+#include <cmath>
+
 namespace brdfnav {
 
 void check_same_shape(const Image& a, const Image& b) {
@@ -46,8 +49,16 @@ double image_distance(const Image& a, const Image& b) {
   return std::sqrt(sum / count);
 }
 
+void check_exr_name(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".exr")
+    throw ImageError(path.string() + ": an OpenEXR file name must end in .exr");
+}
+
 void write_exr(const Image& image, const std::filesystem::path& path,
                const ImageMetadata& metadata) {
+  check_exr_name(path);
   const std::string name = path.string();
   AtomicOutput out(path);
   auto writer = OIIO::ImageOutput::create(out.temp_path().string());
@@ -72,6 +83,13 @@ Image read_image(const std::filesystem::path& path) {
   auto in = OIIO::ImageInput::open(name);
   if (!in) throw ImageError(name + ": cannot read: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
+  // 8- and 16-bit files are display-encoded: read as radiance they would give plausible, wrong
+  // distances.
+  const OIIO::TypeDesc::BASETYPE type = OIIO::TypeDesc::BASETYPE(spec.format.basetype);
+  if (type != OIIO::TypeDesc::FLOAT && type != OIIO::TypeDesc::HALF &&
+      type != OIIO::TypeDesc::DOUBLE)
+    throw ImageError(name + ": holds " + spec.format.c_str() +
+                     " pixels; a BRDF image is linear floating point (OpenEXR)");
   if (spec.nchannels < 3)
     throw ImageError(name + ": has " + std::to_string(spec.nchannels) +
                      " channel(s); a BRDF image has R, G, B and A");
@@ -81,7 +99,14 @@ Image read_image(const std::filesystem::path& path) {
   if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, buffer.data()))
     throw ImageError(name + ": cannot read pixels: " + in->geterror());
   for (std::size_t p = 0; p < image.rgba.size() / 4; ++p) {
-    for (int c = 0; c < 3; ++c) image.rgba[4 * p + c] = buffer[channels * p + c];
+    for (int c = 0; c < 3; ++c) {
+      const float v = buffer[channels * p + c];
+      if (!(v >= 0 && std::isfinite(v)))
+        throw ImageError(name + ": pixel (" + std::to_string(p % spec.width) + ", " +
+                         std::to_string(p / spec.width) + ") has " + "RGB"[c] + " = " +
+                         std::to_string(v) + "; radiance is finite and not negative");
+      image.rgba[4 * p + c] = v;
+    }
     image.rgba[4 * p + 3] = channels == 4 ? buffer[channels * p + 3] : 1.f;
   }
   return image;

@@ -357,6 +357,7 @@ std::vector<Image> Renderer::ward_grid(std::span<const double> alpha_x,
 
 Image Renderer::render(const Material& material) {
   validate(material);
+  require_render_colorspace(material);
   const Lobe lobe = make_lobe(material.model, material.params);
   return compose(diffuse(), specular(lobe), material.rho_d, material.rho_s);
 }

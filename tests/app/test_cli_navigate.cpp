@@ -110,10 +110,12 @@ TEST_F(CliNavigate, RejectsBadInputNamingIt) {
       {"--material ward --radius nan", "--radius"},
       {"--material ward --radius -0.1", "--radius"},
       {"--material ward --radius 0", "--radius"},
+      {"--material ward --radius 1e-300", "--radius"},
       {"--material ward --radius 0.01 --k 0", "--k"},
       {"--material ward:alpha_x=7 --radius 0.01", "params.alpha_x"},
       {"--material missing.yaml --radius 0.01", "missing.yaml"},
       {"--material ward:colorspace=acescg --radius 0.01 --tab diffuse", "colorspace 'acescg'"},
+      {"--material ward:colorspace=acescg --radius 0.01 --tab lobe", "colorspace 'acescg'"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.args);

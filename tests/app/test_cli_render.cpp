@@ -53,6 +53,20 @@ TEST(CliRender, FailuresLeaveNoOutputFile) {
               " --res 16 --out " + out.string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("missing.obj"), std::string::npos) << r.err;
+  // Output names that cannot take the image fail before it is rendered.
+  const struct {
+    fs::path out;
+    std::string message;
+  } outputs[] = {{dir.path / "linear.png", "an OpenEXR file name must end in .exr"},
+                 {dir.path / "missing" / "a.exr", "cannot create a file in its directory"},
+                 {dir.path / "a_dir.exr", "is a directory"}};
+  fs::create_directory(dir.path / "a_dir.exr");
+  for (const auto& o : outputs) {
+    r = run_cli("render --material ward --res 16 --out " + o.out.string());
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find(o.out.string() + ": " + o.message), std::string::npos) << r.err;
+  }
+  fs::remove(dir.path / "a_dir.exr");
   EXPECT_FALSE(fs::exists(out));
   EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator{}), 0);
 }

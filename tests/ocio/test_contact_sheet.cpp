@@ -149,8 +149,9 @@ TEST(ContactSheet, UnwritableTargetLeavesNoFileAndNamesIt) {
   const auto ring = ring_tiles(4, 16);
   dir.write("a_file", "x");
   std::filesystem::create_directories(dir.path() / "a_dir" / "inside");
-  for (const auto& target : {dir.path() / "missing_dir" / "sheet.png",
-                             dir.path() / "a_file" / "sheet.png", dir.path() / "a_dir"}) {
+  for (const auto& target :
+       {dir.path() / "missing_dir" / "sheet.png", dir.path() / "a_file" / "sheet.png",
+        dir.path() / "a_dir", dir.path() / "sheet.exr", dir.path() / "sheet"}) {
     try {
       write_contact_sheet(target.string(), centre, ring);
       FAIL() << "no error for " << target;

@@ -88,6 +88,10 @@ TEST(Thumbnails, RejectsInvalidMaterials) {
   Material bad = ward(0.05, 0.05);
   bad.rho_d[0] = std::nan("");
   EXPECT_THROW(thumbnails.render(bad), MaterialError);
+  // The database's images are lin_rec709: rho in another space would be shown as if it were.
+  Material acescg = ward(0.05, 0.05);
+  acescg.colorspace = "acescg";
+  EXPECT_THROW(thumbnails.render(acescg), MaterialError);
 }
 
 std::vector<Material> ward_row() {

@@ -67,6 +67,9 @@ TEST(Render, ImageIsLinearInRhoDAndRhoS) {
         const double expected = m.rho_d[c] * d.pixel(x, y)[c] + m.rho_s[c] * s.pixel(x, y)[c];
         ASSERT_NEAR(img.pixel(x, y)[c], expected, 1e-6 * (1 + expected));
       }
+  // rho_d and rho_s are read as lin_rec709, the map's space: a material in another is refused.
+  m.colorspace = "acescg";
+  EXPECT_THROW(renderer.render(m), MaterialError);
 }
 
 TEST(Render, DeterministicWhateverTheThreadCount) {

@@ -179,10 +179,11 @@ BRDFNAV_API brdfnav_status brdfnav_navigator_open(const char* database_dir,
 /* Accepts NULL. Every list it returned stays valid. */
 BRDFNAV_API void brdfnav_navigator_close(brdfnav_navigator* navigator);
 
-/* The neighbours of `current` in `tab` at distance `radius` (finite, > 0). `clusters` (>= 1) is
- * the most neighbours the models and gallery tabs return (8 in the paper). A model the database
- * does not hold, a colour tab for a colour space other than lin_rec709 and a bad radius or
- * cluster count are BRDFNAV_ERROR_INVALID_ARGUMENT. Sets *out to NULL on failure. */
+/* The neighbours of `current` in `tab` at distance `radius` (finite, >= 1e-4: kMinRadius).
+ * `clusters` (>= 1) is the most neighbours the models and gallery tabs return (8 in the paper). A
+ * model the database does not hold, a material in a colour space other than lin_rec709 (the
+ * database's) and a bad radius or cluster count are BRDFNAV_ERROR_INVALID_ARGUMENT. Sets *out to
+ * NULL on failure. */
 BRDFNAV_API brdfnav_status brdfnav_navigator_neighbors(const brdfnav_navigator* navigator,
                                                        const brdfnav_material* current,
                                                        double radius, brdfnav_tab tab, int clusters,

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace brdfnav {
 
@@ -42,11 +43,24 @@ std::vector<Neighbor> walk_all(Tab tab, const std::vector<nav::Path>& paths,
 }
 
 void check_query(double radius, int clusters) {
-  if (!(std::isfinite(radius) && radius > 0))
-    throw NavigatorError("radius: must be a positive finite distance, got " +
-                         std::to_string(radius));
+  if (!(std::isfinite(radius) && radius >= kMinRadius)) {
+    char text[96];
+    std::snprintf(text, sizeof text, "radius: must be a finite distance of at least %g, got %g",
+                  kMinRadius, radius);
+    throw NavigatorError(text);
+  }
   if (clusters < 1)
     throw NavigatorError("clusters: must be at least 1, got " + std::to_string(clusters));
+}
+
+// The database's images and embedding are in lin_rec709 (require_render_colorspace); a query in
+// another space is a bad argument of the navigator's, like a bad radius.
+void check_colorspace(const Material& m) {
+  try {
+    require_render_colorspace(m);
+  } catch (const MaterialError& e) {
+    throw NavigatorError(std::string("material: ") + e.what());
+  }
 }
 
 // A material of `model` at the gallery's grey with rho_s = `rho_s`.
@@ -101,6 +115,7 @@ const ModelEmbedding& Navigator::embedding_of(ModelId id) const {
 }
 
 Eigen::VectorXf Navigator::embed(const Material& m) const {
+  check_colorspace(m);
   return embedding_of(m.model).embed(m);
 }
 
@@ -139,6 +154,7 @@ Material Navigator::convert(const Material& m, ModelId to) const {
 
 std::vector<Equivalent> Navigator::equivalents(const Material& m) const {
   validate(m);
+  check_colorspace(m);
   std::vector<Equivalent> out;
   for (const ProfileGrid& g : database_.manifest().grids) {
     if (g.model == m.model || !database_.conversion(m.model, g.model)) continue;
@@ -152,6 +168,7 @@ std::vector<Equivalent> Navigator::equivalents(const Material& m) const {
 std::vector<Neighbor> Navigator::neighbors(const Material& current, double radius, Tab tab,
                                            int clusters) const {
   validate(current);
+  check_colorspace(current);
   check_query(radius, clusters);
   const ModelEmbedding& embedding = embedding_of(current.model);
   switch (tab) {
@@ -159,10 +176,6 @@ std::vector<Neighbor> Navigator::neighbors(const Material& current, double radiu
       return lobe_tab(current, radius);
     case Tab::diffuse:
     case Tab::specular:
-      if (current.colorspace != kDefaultColorspace)
-        throw NavigatorError("material: colorspace '" + current.colorspace +
-                             "': the colour tabs work in CIELAB from " +
-                             std::string(kDefaultColorspace) + " only");
       return walk_all(tab,
                       nav::colour_paths(current, tab == Tab::diffuse ? nav::ColourTerm::diffuse
                                                                      : nav::ColourTerm::specular),

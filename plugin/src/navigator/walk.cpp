@@ -81,13 +81,15 @@ Path scale_path(const Material& m, const ParamGrid& grid, const std::vector<std:
 
 Hit walk_to_sphere(const ModelEmbedding& embedding, const Eigen::VectorXf& centre, double radius,
                    const Path& path) {
-  // f(s) = distance - radius: negative inside the sphere.
-  const auto f = [&](double s) {
-    return Embedding::distance(embedding.embed(path.material(s)), centre) - radius;
+  // The root of f(s) = distance(s) - radius, negative inside the sphere. A hit reports the
+  // distance itself: distance - radius + radius would lose it to rounding when the radius is far
+  // larger.
+  const auto distance = [&](double s) {
+    return Embedding::distance(embedding.embed(path.material(s)), centre);
   };
   double lo = 0, f_lo = -radius;  // the walk starts at the centre
   for (std::size_t i = 1; i < path.breaks.size(); ++i) {
-    double hi = path.breaks[i], f_hi = f(hi);
+    double hi = path.breaks[i], d_hi = distance(hi), f_hi = d_hi - radius;
     if (f_hi < 0) {
       lo = hi, f_lo = f_hi;
       continue;
@@ -101,21 +103,21 @@ Hit walk_to_sphere(const ModelEmbedding& embedding, const Eigen::VectorXf& centr
     for (int k = 0; k < kMaxRefinements && f_hi > kRadiusTolerance * radius; ++k) {
       const double s = hi - w_hi * (hi - lo) / (w_hi - w_lo);
       if (!(s > lo && s < hi)) break;  // the segment cannot shrink any further
-      const double f_s = f(s);
+      const double d_s = distance(s), f_s = d_s - radius;
       if (f_s < 0) {
         lo = s, w_lo = f_s;
         if (last == -1) w_hi *= 0.5;
         last = -1;
       } else {
-        hi = s, f_hi = w_hi = f_s;
+        hi = s, d_hi = d_s, f_hi = w_hi = f_s;
         if (last == 1) w_lo *= 0.5;
         last = 1;
       }
     }
-    return {path.material(hi), f_hi + radius, true};
+    return {path.material(hi), d_hi, true};
   }
   const double end = path.breaks.back();
-  return {path.material(end), f(end) + radius, false};
+  return {path.material(end), distance(end), false};
 }
 
 std::vector<Path> lobe_paths(const Material& m, const ParamGrid& grid, bool ward_isotropic) {

@@ -1,5 +1,6 @@
 // Writing outputs so that nothing is ever half-written: write a temporary file beside the target,
-// then rename it over the target. A failure or a crash leaves the old file (or no file).
+// then rename it over the target. A failure or a crash leaves the old file (or no file). And
+// reading inputs whole, with an error that names the file.
 #pragma once
 
 #include <filesystem>
@@ -32,5 +33,9 @@ class AtomicOutput {
 // the filesystem has it) flushed to disk before it is renamed onto the target, so that a killed
 // writer leaves no file behind. Throws std::runtime_error naming the target.
 void write_file_atomic(const std::filesystem::path& target, std::string_view contents);
+
+// The whole of an input file. Throws std::runtime_error naming the file when it is a directory
+// or cannot be opened or read (the system's reason).
+std::string read_file(const std::filesystem::path& path);
 
 }  // namespace brdfnav

@@ -35,6 +35,11 @@ inline constexpr double kRhoSMax = 10.0;
 Material default_material(ModelId id);
 // Throws MaterialError naming the first offending key ("params.alpha_x", "rho_d", ...).
 void validate(const Material& m);
+// Images and distances (the renderer, the database's embedding, thumbnails, the navigator) are
+// computed in kDefaultColorspace, the space of the environment maps: rho_d and rho_s given in
+// another space would be read as if they were in it. Until colours are converted, such a
+// material is refused there: MaterialError naming `colorspace`.
+void require_render_colorspace(const Material& m);
 // Closure of a validated material.
 Closure make_closure(const Material& m);
 

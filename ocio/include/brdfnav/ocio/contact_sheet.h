@@ -65,7 +65,7 @@ struct SheetSize {
   int height = 0;
 };
 
-// Writes the sheet to `path` as PNG (whatever its extension) through a temporary file in the
+// Writes the sheet to `path`, which must end in .png, as PNG through a temporary file in the
 // same directory that is then renamed over `path`: on any failure no file is left (the previous
 // one, if any, is untouched) and ContactSheetError names `path`.
 SheetSize write_contact_sheet(const std::string& path, const SheetTile& centre,
