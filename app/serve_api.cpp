@@ -48,6 +48,13 @@ std::string join(const std::vector<std::string>& names) {
   return out;
 }
 
+// Text as an error message quotes it: cut to 80 characters, so that a 64 KiB value, field name
+// or file name does not come back whole.
+std::string cut(std::string text) {
+  if (text.size() > 80) text = text.substr(0, 77) + "...";
+  return text;
+}
+
 // The request body as a JSON object with only the `allowed` keys.
 json parse_body(std::string_view body, const std::vector<std::string>& allowed) {
   json request;
@@ -59,7 +66,7 @@ json parse_body(std::string_view body, const std::vector<std::string>& allowed) 
   if (!request.is_object()) throw RequestError("body", "expected a JSON object");
   for (const auto& [key, value] : request.items())
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-      throw RequestError(key, "unknown field (expected one of: " + join(allowed) + ")");
+      throw RequestError(cut(key), "unknown field (expected one of: " + join(allowed) + ")");
   return request;
 }
 
@@ -73,13 +80,10 @@ bool deeper_than(const json& value, int levels) {
   return false;
 }
 
-// A value as an error message quotes it: cut to 80 characters, so that a 64 KiB value does not
-// come back whole, and not dumped at all when nested deeply.
+// A value as an error message quotes it: cut, and not dumped at all when nested deeply.
 std::string shown(const json& value) {
   if (deeper_than(value, 3)) return "a value nested too deeply";
-  std::string text = json_text(value);
-  if (text.size() > 80) text = text.substr(0, 77) + "...";
-  return text;
+  return cut(json_text(value));
 }
 
 const json& require(const json& request, const std::string& field) {
@@ -344,10 +348,9 @@ ApiResponse NavigatorApi::export_yaml(std::string_view body) const {
 
 ApiResponse NavigatorApi::import_yaml(std::string_view body, std::string_view name) const {
   return answer([&] {
-    return json_response(
-        {{"material",
-          material_json(check_held(navigator_.database(),
-                                   parse_material_yaml(body, name.empty() ? "upload" : name)))}});
+    const std::string source = name.empty() ? "upload" : cut(std::string(name));
+    const Material m = check_held(navigator_.database(), parse_material_yaml(body, source));
+    return json_response({{"material", material_json(m)}});
   });
 }
 

@@ -1,0 +1,62 @@
+// `brdfnav serve`'s JSON API (app/serve_api.h) called directly, as the HTTP server calls it, on
+// the small fixture database of the fuzzers (tests/fuzz/database): the answers to requests the
+// browser test cannot make as easily, such as very long names.
+#include "serve_api.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+namespace brdfnav::cli {
+namespace {
+
+const NavigatorApi& api() {
+  static const NavigatorApi instance(
+      ApiOptions{std::filesystem::path(BRDFNAV_SOURCE_DIR) / "tests/fuzz/database", 8});
+  return instance;
+}
+
+const std::multimap<std::string, std::string> kNoQuery;
+
+ApiResponse call(std::string_view method, std::string_view path, std::string_view body = "",
+                 const std::multimap<std::string, std::string>& query = kNoQuery) {
+  return api().handle({method, path, query, body});
+}
+
+std::string error_of(const ApiResponse& answer) {
+  EXPECT_EQ(answer.content_type, "application/json");
+  return nlohmann::json::parse(answer.body).at("error").get<std::string>();
+}
+
+const std::string kMaterial =
+    R"({"model": "ward", "params": {"alpha_x": 0.1, "alpha_y": 0.05}, "rho_d": [0.2, 0.2, 0.2],)"
+    R"( "rho_s": [0.04, 0.04, 0.04], "colorspace": "lin_rec709"})";
+
+TEST(ServeApi, AnUnknownFieldsNameIsCutInTheMessage) {
+  const std::string name(60000, 'x');
+  const ApiResponse answer = call(
+      "POST", "/api/neighbors",
+      R"({"material": )" + kMaterial + R"(, "radius": 0.02, "tab": "lobe", ")" + name + R"(": 1})");
+  EXPECT_EQ(answer.status, 400);
+  EXPECT_LT(answer.body.size(), 300u);
+  EXPECT_EQ(error_of(answer).rfind(std::string(77, 'x') + "...: unknown field (expected", 0), 0u)
+      << answer.body;
+  // A short name is quoted whole.
+  EXPECT_EQ(error_of(call("POST", "/api/export", R"({"material": {}, "extra": 1})"))
+                .rfind("extra: unknown field", 0),
+            0u);
+}
+
+TEST(ServeApi, TheImportedFilesNameIsCutInTheMessage) {
+  const std::multimap<std::string, std::string> query{{"name", std::string(60000, 'y') + ".yaml"}};
+  const ApiResponse answer = call("POST", "/api/import", "model: [", query);
+  EXPECT_EQ(answer.status, 400);
+  EXPECT_LT(answer.body.size(), 300u);
+  EXPECT_EQ(error_of(answer).rfind(std::string(77, 'y') + "...:", 0), 0u) << answer.body;
+}
+
+}  // namespace
+}  // namespace brdfnav::cli
