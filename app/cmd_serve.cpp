@@ -34,6 +34,7 @@ struct ServeOptions {
 void reply(httplib::Response& res, const ApiResponse& answer) {
   res.status = answer.status;
   res.set_content(answer.body, answer.content_type.c_str());
+  for (const auto& [name, value] : answer.headers) res.set_header(name.c_str(), value);
 }
 
 const WebAsset* find_asset(const std::string& path) {
@@ -47,9 +48,12 @@ void add_routes(httplib::Server& server, const NavigatorApi& api) {
   const auto handle = [&api](const httplib::Request& req, httplib::Response& res) {
     reply(res, api.handle({req.method, req.path, req.params, req.body}));
   };
-  // Every POST and every GET under /api/ is the API's; other GETs are the page's files.
+  // Every POST and every request under /api/ is the API's (which refuses the methods a path
+  // does not take with 405); other GETs are the page's files.
   server.Get("/api/.*", handle);
   server.Post(".*", handle);
+  server.Put("/api/.*", handle).Patch("/api/.*", handle).Delete("/api/.*", handle);
+  server.Options("/api/.*", handle);
   server.Get("/.*", [](const httplib::Request& req, httplib::Response& res) {
     if (const WebAsset* asset = find_asset(req.path)) {
       res.set_content(std::string(asset->body), std::string(asset->content_type).c_str());

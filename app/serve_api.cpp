@@ -8,7 +8,9 @@
 #include <yaml-cpp/yaml.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -241,6 +243,22 @@ std::string encode_png(const std::vector<std::uint8_t>& rgba, int width, int hei
   return std::string(bytes.begin(), bytes.end());
 }
 
+// The API's paths: /api/info is read with GET (httplib answers HEAD with the GET handler and
+// drops the body), the others take a body with POST.
+struct Route {
+  std::string_view path;
+  bool post;
+  std::string_view allow() const { return post ? "POST" : "GET, HEAD"; }
+  bool takes(std::string_view method) const {
+    return post ? method == "POST" : method == "GET" || method == "HEAD";
+  }
+};
+constexpr Route kRoutes[] = {{"/api/info", false},
+                             {"/api/neighbors", true},
+                             {"/api/thumbnail", true},
+                             {"/api/export", true},
+                             {"/api/import", true}};
+
 // Runs `body`, turning the client's mistakes into 400 and anything else into 500.
 template <typename Body>
 ApiResponse answer(Body&& body) {
@@ -268,20 +286,24 @@ NavigatorApi::NavigatorApi(const ApiOptions& options)
       thumbnails_(navigator_.database(), options.resolution) {}
 
 ApiResponse NavigatorApi::handle(const ApiRequest& r) const {
-  // httplib answers HEAD with a GET handler, and drops the body.
-  if ((r.method == "GET" || r.method == "HEAD") && r.path == "/api/info") return info();
-  if (r.method == "POST") {
-    if (r.body.size() > kMaxBodyBytes)
-      return error_response(400, "body: larger than " + std::to_string(kMaxBodyBytes) + " bytes");
-    if (r.path == "/api/neighbors") return neighbors(r.body);
-    if (r.path == "/api/thumbnail") return thumbnail(r.body);
-    if (r.path == "/api/export") return export_yaml(r.body);
-    if (r.path == "/api/import") {
-      const auto name = r.query.find("name");
-      return import_yaml(r.body, name == r.query.end() ? "" : name->second);
-    }
+  const auto route = std::find_if(std::begin(kRoutes), std::end(kRoutes),
+                                  [&](const Route& route) { return route.path == r.path; });
+  const std::string request = cut(std::string(r.method) + " " + std::string(r.path));
+  if (route == std::end(kRoutes)) return error_response(404, request + ": not found");
+  if (!route->takes(r.method)) {
+    ApiResponse refused = error_response(
+        405, request + ": method not allowed (allowed: " + std::string(route->allow()) + ")");
+    refused.headers.emplace_back("Allow", route->allow());
+    return refused;
   }
-  return error_response(404, std::string(r.method) + " " + std::string(r.path) + ": not found");
+  if (r.path == "/api/info") return info();
+  if (r.body.size() > kMaxBodyBytes)
+    return error_response(400, "body: larger than " + std::to_string(kMaxBodyBytes) + " bytes");
+  if (r.path == "/api/neighbors") return neighbors(r.body);
+  if (r.path == "/api/thumbnail") return thumbnail(r.body);
+  if (r.path == "/api/export") return export_yaml(r.body);
+  const auto name = r.query.find("name");
+  return import_yaml(r.body, name == r.query.end() ? "" : name->second);
 }
 
 ApiResponse NavigatorApi::info() const {

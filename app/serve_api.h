@@ -12,6 +12,8 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace brdfnav::cli {
 
@@ -26,9 +28,11 @@ struct ApiResponse {
   int status = 200;
   std::string content_type;
   std::string body;
+  std::vector<std::pair<std::string, std::string>> headers;  // beside Content-Type (Allow)
 };
 
-// {"error": message} with status 400 (the client's mistake) or 500 (the server's).
+// {"error": message} with status 400 (the client's mistake), 404 (no such path), 405 (a method
+// the path does not take) or 500 (the server's).
 ApiResponse error_response(int status, const std::string& message);
 
 // A request as the HTTP server decoded it. `query` holds the decoded parameters (httplib's
@@ -54,9 +58,10 @@ class NavigatorApi {
   NavigatorApi(const NavigatorApi&) = delete;  // thumbnails_ refers into navigator_
   NavigatorApi& operator=(const NavigatorApi&) = delete;
 
-  // Every route of the API: GET /api/info and the POSTs below; any other method or path is 404
-  // {"error": "<METHOD> <path>: not found"}, a body over kMaxBodyBytes 400. What the server and
-  // the fuzzer of tests/fuzz/serve_request.cpp call.
+  // Every route of the API: GET /api/info and the POSTs below. Any other path is 404
+  // {"error": "<METHOD> <path>: not found"}; another method on one of these paths is 405 with
+  // an Allow header; a body over kMaxBodyBytes is 400. What the server and the fuzzer of
+  // tests/fuzz/serve_request.cpp call.
   ApiResponse handle(const ApiRequest& request) const;
 
   // GET /api/info: models and parameter tables, tabs, displays and views, radius range, the

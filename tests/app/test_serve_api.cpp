@@ -1,6 +1,6 @@
 // `brdfnav serve`'s JSON API (app/serve_api.h) called directly, as the HTTP server calls it, on
 // the small fixture database of the fuzzers (tests/fuzz/database): the answers to requests the
-// browser test cannot make as easily, such as very long names.
+// browser test cannot make as easily, such as very long names and every wrong method.
 #include "serve_api.h"
 
 #include <gtest/gtest.h>
@@ -56,6 +56,34 @@ TEST(ServeApi, TheImportedFilesNameIsCutInTheMessage) {
   EXPECT_EQ(answer.status, 400);
   EXPECT_LT(answer.body.size(), 300u);
   EXPECT_EQ(error_of(answer).rfind(std::string(77, 'y') + "...:", 0), 0u) << answer.body;
+}
+
+TEST(ServeApi, AWrongMethodIs405WithTheAllowedOnes) {
+  struct Case {
+    std::string method, path, allow;
+  };
+  for (const Case& c :
+       {Case{"GET", "/api/neighbors", "POST"}, Case{"HEAD", "/api/export", "POST"},
+        Case{"PUT", "/api/thumbnail", "POST"}, Case{"GET", "/api/import", "POST"},
+        Case{"POST", "/api/info", "GET, HEAD"}, Case{"DELETE", "/api/info", "GET, HEAD"}}) {
+    const ApiResponse answer = call(c.method, c.path, "{}");
+    EXPECT_EQ(answer.status, 405) << c.method << " " << c.path;
+    ASSERT_EQ(answer.headers.size(), 1u);
+    EXPECT_EQ(answer.headers[0].first, "Allow");
+    EXPECT_EQ(answer.headers[0].second, c.allow);
+    EXPECT_EQ(error_of(answer),
+              c.method + " " + c.path + ": method not allowed (allowed: " + c.allow + ")");
+  }
+}
+
+TEST(ServeApi, AnUnknownPathIs404AndTheRightMethods200) {
+  const ApiResponse missing = call("GET", "/api/nope");
+  EXPECT_EQ(missing.status, 404);
+  EXPECT_TRUE(missing.headers.empty());
+  EXPECT_EQ(error_of(missing), "GET /api/nope: not found");
+  EXPECT_EQ(call("GET", "/api/info").status, 200);
+  EXPECT_EQ(call("HEAD", "/api/info").status, 200);
+  EXPECT_EQ(call("POST", "/api/export", R"({"material": )" + kMaterial + "}").status, 200);
 }
 
 }  // namespace

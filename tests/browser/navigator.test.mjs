@@ -136,7 +136,8 @@ async function api(pathname, body, type = 'application/json') {
     throw new Error(`${pathname}: ${error.message}: ${error.cause?.code ?? error.cause}`);
   });
   const text = await response.text();
-  return { status: response.status, type: response.headers.get('content-type'), text };
+  return { status: response.status, type: response.headers.get('content-type'), text,
+    headers: response.headers };
 }
 
 const info = async () => JSON.parse((await api('/api/info')).text);
@@ -415,6 +416,17 @@ test('bad API requests get 400 naming the field, and the server keeps serving', 
   const missing = await api('/api/nope');
   assert.equal(missing.status, 404);
   assert.match(JSON.parse(missing.text).error, /not found/);
+  // A method the path does not take: 405, naming those it does.
+  for (const [pathname, payload, allow] of [['/api/neighbors', undefined, 'POST'],
+    ['/api/info', '{}', 'GET, HEAD']]) {
+    const refused = await api(pathname, payload);
+    assert.equal(refused.status, 405, pathname);
+    assert.equal(refused.headers.get('allow'), allow);
+    assert.match(JSON.parse(refused.text).error, /: method not allowed/);
+  }
+  const deleted = await fetch(new URL('/api/info', url), { method: 'DELETE' });
+  assert.equal(deleted.status, 405);
+  assert.equal(deleted.headers.get('allow'), 'GET, HEAD');
 
   // All at once, good and bad: every request is answered, and the good ones correctly.
   const good = body({ material: m, radius: 0.02, tab: 'diffuse' });

@@ -2,9 +2,10 @@
 // calls) on the fixture database. The input is "METHOD PATH[?key=value&...]", a newline and the
 // body; the query's values are taken as httplib would hand them over, already decoded.
 //
-// Every answer must be one the API documents (docs/SERVE.md): 200, 400 for the client's mistakes
-// or 404 for an unknown route, never 500; JSON that parses, with an "error" string unless 200; a
-// PNG for a thumbnail; an export that reads back as a material.
+// Every answer must be one the API documents (docs/SERVE.md): 200, 400 for the client's mistakes,
+// 404 for an unknown path or 405 with an Allow header for a method the path does not take, never
+// 500; JSON that parses, with an "error" string unless 200; a PNG for a thumbnail; an export
+// that reads back as a material.
 #include "fuzz_target.h"
 
 #include "serve_api.h"
@@ -43,8 +44,10 @@ void check_json(const cli::ApiResponse& answer) {
 }
 
 void check(const cli::ApiResponse& answer) {
-  if (answer.status != 200 && answer.status != 400 && answer.status != 404)
+  if (answer.status != 200 && answer.status != 400 && answer.status != 404 && answer.status != 405)
     fail("status " + std::to_string(answer.status) + ": " + answer.body);
+  if ((answer.status == 405) != (answer.headers.size() == 1 && answer.headers[0].first == "Allow"))
+    fail("status " + std::to_string(answer.status) + " and an Allow header go together");
   if (answer.content_type == "application/json") {
     check_json(answer);
   } else if (answer.status != 200) {
