@@ -427,6 +427,10 @@ test('bad API requests get 400 naming the field, and the server keeps serving', 
   const deleted = await fetch(new URL('/api/info', url), { method: 'DELETE' });
   assert.equal(deleted.status, 405);
   assert.equal(deleted.headers.get('allow'), 'GET, HEAD');
+  // docs/SERVE.md quotes the Content-Security-Policy the server sends.
+  const csp = (await api('/')).headers.get('content-security-policy');
+  const doc = fs.readFileSync(path.join(root, 'docs/SERVE.md'), 'utf8').replace(/\s+/g, ' ');
+  assert.ok(doc.includes(`\`Content-Security-Policy: ${csp}\``), csp);
 
   // All at once, good and bad: every request is answered, and the good ones correctly.
   const good = body({ material: m, radius: 0.02, tab: 'diffuse' });
