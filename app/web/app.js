@@ -208,8 +208,24 @@ function drawRing(neighbors) {
     return button;
   });
   $('#ring').replaceChildren(...figures);
+  $('#ring').removeAttribute('aria-busy');
   $('#empty').hidden = neighbors.length > 0;
   return ordered.map((n, i) => [n, figures[i].querySelector('img')]);
+}
+
+// The variations of the previous state are not clickable while the new ones load: a second
+// click would navigate from a material no longer current, or push the same one twice.
+function freezeRing() {
+  const ring = $('#ring');
+  ring.setAttribute('aria-busy', 'true');
+  for (const button of ring.querySelectorAll('button')) button.disabled = true;
+}
+
+// What a failed query leaves: no variation of another state, and no "none here" either.
+function clearRing() {
+  $('#ring').replaceChildren();
+  $('#ring').removeAttribute('aria-busy');
+  $('#empty').hidden = true;
 }
 
 // Puts the thumbnail on `img` unless a newer redraw has begun meanwhile: its images win.
@@ -239,6 +255,7 @@ async function redraw() {
   centre.dataset.material = JSON.stringify(material);
   centre.querySelector('figcaption').textContent = modelInfo(material.model).title;
   drawReadout(material);
+  freezeRing();
   neighborQuery?.abort();
   neighborQuery = new AbortController();
   progress.start('Finding variations\u2026');
@@ -259,6 +276,7 @@ async function redraw() {
     showError('');
   } catch (error) {
     if (error.name === 'AbortError' || gen !== generation) return;
+    if ($('#ring').hasAttribute('aria-busy')) clearRing();  // still the previous state's ring
     showError(error.message);
   }
   progress.stop();
@@ -267,9 +285,13 @@ async function redraw() {
 
 // ---- actions --------------------------------------------------------------------------------
 
+// Makes `material` the current one; the current one again (a load of the same file) adds no
+// history entry, which Back would seem to skip.
 function navigate(material) {
-  state.history.splice(state.at + 1, Infinity, material);
-  state.at = state.history.length - 1;
+  if (JSON.stringify(material) !== JSON.stringify(state.history[state.at])) {
+    state.history.splice(state.at + 1, Infinity, material);
+    state.at = state.history.length - 1;
+  }
   redraw();
 }
 

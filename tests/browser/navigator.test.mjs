@@ -305,6 +305,14 @@ test('loading a YAML file starts from it, and a bad one is reported', async () =
   assert.equal(await page.isDisabled('#forward'), true, 'a load starts a new branch');
   assert.match(await page.textContent('#readout tbody tr[data-key=sigma]'), /0\.3/);
   await shot('loaded-yaml');
+  // The same file again is the current material again: no second history entry.
+  await page.setInputFiles('#load-file', file);
+  await settled();
+  await page.click('#back');
+  await settled();
+  assert.notDeepEqual(await centre(), material, 'Back leaves the loaded material');
+  await page.click('#forward');
+  await settled();
 
   const bad = path.join(tmp, 'bad.yaml');
   fs.writeFileSync(bad, YAML.stringify({ brdfnav_material: 1, ...material,
@@ -344,6 +352,62 @@ test('the display and view selectors re-render through OCIO', async () => {
   await page.selectOption('#view', 'Standard');
   await settled();
   assert.deepEqual(pageErrors, []);
+});
+
+test('a failed query leaves no variation of the previous state to click', async () => {
+  const previous = await centre();
+  await selectTab('lobe');
+  const file = path.join(tmp, 'acescg.yaml');
+  fs.writeFileSync(file, YAML.stringify({ brdfnav_material: 1, ...previous, colorspace: 'acescg' }));
+  await page.setInputFiles('#load-file', file);
+  await settled();
+  assert.ok((await variations()).length > 0, 'the lobe tab takes any colour space');
+  await page.keyboard.press('1');  // the colour tabs refuse one other than lin_rec709
+  await settled();
+  assert.equal(await page.getAttribute('#tabs [data-tab=diffuse]', 'aria-selected'), 'true');
+  assert.match(await page.textContent('#error'), /colorspace 'acescg'/);
+  assert.deepEqual(await variations(), [], 'no lobe variation is left on the diffuse tab');
+  assert.equal(await page.isVisible('#empty'), false);
+  await shot('failed-query');
+  await page.keyboard.press('3');
+  await settled();
+  assert.ok((await variations()).length > 0);
+  assert.equal(await page.isVisible('#error'), false);
+  await page.keyboard.press('[');
+  await settled();
+  assert.deepEqual(await centre(), previous);
+});
+
+test('quick clicks add one history entry, from the ring on screen', async () => {
+  const before_ = await centre();
+  const moves = (await variations()).map((v, index) => ({ ...v, index }))
+    .filter((v) => JSON.stringify(v.material) !== JSON.stringify(before_));
+  assert.ok(moves.length >= 2);
+  // While the new variations load, the old ones cannot be clicked.
+  await page.route('**/api/neighbors', async (route) => {
+    await new Promise((resolve) => setTimeout(resolve, 300));
+    await route.continue();
+  });
+  await page.locator('.variation').nth(moves[0].index).dblclick();
+  assert.equal(await page.locator('.variation').first().isDisabled(), true);
+  await settled();
+  await page.unroute('**/api/neighbors');
+  assert.deepEqual(await centre(), moves[0].material);
+  assert.equal(await page.locator('.variation').first().isDisabled(), false);
+  await page.click('#back');
+  await settled();
+  assert.deepEqual(await centre(), before_, 'a double click is one history entry');
+  // A second click before the new ring arrives does not navigate from the old one.
+  await page.evaluate(([a, b]) => {
+    const buttons = document.querySelectorAll('.variation');
+    buttons[a].click();
+    buttons[b].click();
+  }, [moves[0].index, moves[1].index]);
+  await settled();
+  assert.deepEqual(await centre(), moves[0].material);
+  await page.click('#back');
+  await settled();
+  assert.deepEqual(await centre(), before_);
 });
 
 // ---- the API's answers to bad requests ---------------------------------------------------------
