@@ -25,6 +25,9 @@ const state = {
 };
 let generation = 0;  // bumped by every redraw; answers for an older one are dropped
 let neighborQuery = null;
+// Whether the ring had the keyboard focus when a redraw began: the new ring takes it back,
+// rather than leaving it on <body> when the old variations go.
+let ringFocus = false;
 
 // ---- the API ------------------------------------------------------------------------------
 
@@ -210,6 +213,10 @@ function drawRing(neighbors) {
   $('#ring').replaceChildren(...figures);
   $('#ring').removeAttribute('aria-busy');
   $('#empty').hidden = neighbors.length > 0;
+  // Unless the focus went elsewhere meanwhile (a tab, the slider).
+  const lost = !document.activeElement || document.activeElement === document.body;
+  if (ringFocus && lost) figures[0]?.focus();
+  ringFocus = false;
   return ordered.map((n, i) => [n, figures[i].querySelector('img')]);
 }
 
@@ -217,6 +224,7 @@ function drawRing(neighbors) {
 // click would navigate from a material no longer current, or push the same one twice.
 function freezeRing() {
   const ring = $('#ring');
+  ringFocus ||= ring.contains(document.activeElement);
   ring.setAttribute('aria-busy', 'true');
   for (const button of ring.querySelectorAll('button')) button.disabled = true;
 }
@@ -226,6 +234,7 @@ function clearRing() {
   $('#ring').replaceChildren();
   $('#ring').removeAttribute('aria-busy');
   $('#empty').hidden = true;
+  ringFocus = false;
 }
 
 // Puts the thumbnail on `img` unless a newer redraw has begun meanwhile: its images win.

@@ -410,6 +410,20 @@ test('quick clicks add one history entry, from the ring on screen', async () => 
   assert.deepEqual(await centre(), before_);
 });
 
+test('a variation chosen with the keyboard leaves the focus on the new ring', async () => {
+  const before_ = await centre();
+  const move = (await variations()).findIndex(
+    (v) => JSON.stringify(v.material) !== JSON.stringify(before_));
+  await page.locator('.variation').nth(move).focus();
+  await page.keyboard.press('Enter');
+  await settled();
+  assert.notDeepEqual(await centre(), before_);
+  assert.equal(await page.evaluate(() => document.activeElement === document.querySelector(
+    '#ring .variation')), true, 'the first new variation has the focus');
+  await page.keyboard.press('[');
+  await settled();
+});
+
 // ---- the API's answers to bad requests ---------------------------------------------------------
 
 test('bad API requests get 400 naming the field, and the server keeps serving', async () => {
