@@ -98,6 +98,14 @@ const number = (x) => (Math.abs(x) >= 1e4 || (x !== 0 && Math.abs(x) < 1e-3)
   ? x.toExponential(3) : Number(x.toPrecision(4)).toString());
 const rgb = (c) => c.map((x) => x.toFixed(3)).join(' ');
 
+// The centre image's text alternative: the model and the values the readout lists.
+function describe(material) {
+  const { title, params } = modelInfo(material.model);
+  const values = params.map((p) => `${p.name} ${number(material.params[p.name])}`);
+  return `Current material: ${title}, ${values.join(', ')}, rho_d ${rgb(material.rho_d)}, ` +
+    `rho_s ${rgb(material.rho_s)}`;
+}
+
 function modelInfo(name) {
   return state.info.models.find((m) => m.name === name);
 }
@@ -263,6 +271,7 @@ async function redraw() {
   const centre = $('#centre');
   centre.dataset.material = JSON.stringify(material);
   centre.querySelector('figcaption').textContent = modelInfo(material.model).title;
+  centre.querySelector('img').alt = describe(material);
   drawReadout(material);
   freezeRing();
   neighborQuery?.abort();
@@ -325,6 +334,7 @@ function setRadius(position) {
   slider.value = Math.min(SLIDER_STEPS, Math.max(0, position));
   state.radius = radiusAt(Number(slider.value));
   $('#radius-value').textContent = state.radius.toFixed(4);
+  slider.setAttribute('aria-valuetext', `radius ${state.radius.toFixed(4)}`);
 }
 
 function selectTab(tab) {

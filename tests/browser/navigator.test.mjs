@@ -424,6 +424,19 @@ test('a variation chosen with the keyboard leaves the focus on the new ring', as
   await settled();
 });
 
+test('the radius slider and the centre image describe their values', async () => {
+  const radius = await page.textContent('#radius-value');
+  assert.equal(await page.getAttribute('#radius', 'aria-valuetext'), `radius ${radius}`);
+  const current = await centre();
+  const { title } = (await info()).models.find((m) => m.name === current.model);
+  const alt = await page.getAttribute('#centre img', 'alt');
+  assert.ok(alt.includes(title), alt);
+  for (const name of Object.keys(current.params)) {
+    const value = await page.textContent(`#readout tr[data-key=${name}] td:nth-child(2)`);
+    assert.ok(alt.includes(`${name} ${value}`), `${name} ${value} in ${alt}`);
+  }
+});
+
 // ---- the API's answers to bad requests ---------------------------------------------------------
 
 test('bad API requests get 400 naming the field, and the server keeps serving', async () => {
