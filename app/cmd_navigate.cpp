@@ -27,12 +27,10 @@ const CLI::Validator& radius_validator() {
         try {
           std::size_t used = 0;
           const double value = std::stod(text, &used);
-          if (used == text.size() && std::isfinite(value) && value >= kMinRadius) return "";
+          if (used == text.size() && valid_radius(value)) return "";
         } catch (const std::exception&) {
         }
-        char min[32];
-        std::snprintf(min, sizeof min, "%g", kMinRadius);
-        return "must be a finite distance of at least " + std::string(min) + ", got '" + text + "'";
+        return radius_requirement() + ", got '" + text + "'";
       },
       "RADIUS");
   return validator;

@@ -150,8 +150,8 @@ json material_json(const Material& m) {
 double read_radius(const json& value) {
   if (!value.is_number()) throw RequestError("radius", "expected a number, got " + shown(value));
   const double radius = value.get<double>();
-  if (!std::isfinite(radius) || radius <= 0)
-    throw RequestError("radius", "must be a positive finite distance, got " + shown(value));
+  if (!valid_radius(radius))
+    throw RequestError("radius", radius_requirement() + ", got " + shown(value));
   return radius;
 }
 

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -33,6 +34,12 @@ class NavigatorError : public std::runtime_error {
 // about 1e-7 (measured on the test database); at 1e-4 that is 0.1% of the radius, while below
 // 1e-7 the walks would stop at noise, far from the radius. The navigator page starts at 0.002.
 inline constexpr double kMinRadius = 1e-4;
+// Whether `radius` is one a query may ask for, and what every front end says of one that is not
+// ("must be a finite distance of at least 0.0001").
+inline bool valid_radius(double radius) {
+  return std::isfinite(radius) && radius >= kMinRadius;
+}
+std::string radius_requirement();
 
 // The tabs of the interface. `gallery` is the start gallery: the most different materials of
 // the database, whatever the current material.

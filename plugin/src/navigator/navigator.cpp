@@ -43,11 +43,10 @@ std::vector<Neighbor> walk_all(Tab tab, const std::vector<nav::Path>& paths,
 }
 
 void check_query(double radius, int clusters) {
-  if (!(std::isfinite(radius) && radius >= kMinRadius)) {
-    char text[96];
-    std::snprintf(text, sizeof text, "radius: must be a finite distance of at least %g, got %g",
-                  kMinRadius, radius);
-    throw NavigatorError(text);
+  if (!valid_radius(radius)) {
+    char got[32];
+    std::snprintf(got, sizeof got, "%g", radius);
+    throw NavigatorError("radius: " + radius_requirement() + ", got " + got);
   }
   if (clusters < 1)
     throw NavigatorError("clusters: must be at least 1, got " + std::to_string(clusters));
@@ -112,6 +111,12 @@ const ModelEmbedding& Navigator::embedding_of(ModelId id) const {
   if (const ModelEmbedding* e = database_.embedding(id)) return *e;
   throw NavigatorError("material: model '" + model_name(id) + "' is not in the database " +
                        database_.dir().string());
+}
+
+std::string radius_requirement() {
+  char min[32];
+  std::snprintf(min, sizeof min, "%g", kMinRadius);
+  return std::string("must be a finite distance of at least ") + min;
 }
 
 Eigen::VectorXf Navigator::embed(const Material& m) const {
