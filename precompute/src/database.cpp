@@ -1,9 +1,12 @@
 // Database::open(): verification of a database directory and loading of its tables.
 #include "database_format.h"
 
+#include <brdfnav/core/material.h>
+
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <optional>
 
 namespace brdfnav {
@@ -37,9 +40,36 @@ void check_files(const fs::path& dir, const Manifest& m) {
   }
 }
 
+// A grid image was rendered at its node: the parameters in its header's material are the
+// manifest's grid values. The manifest has no checksum of its own, so without this an edited grid
+// value would move every query and conversion silently.
+void check_node(const OIIO::ImageSpec& spec, const std::string& file, const ProfileGrid& g,
+                std::size_t node) {
+  const std::string header = attribute(spec, "brdfnav:material");
+  Material rendered;
+  try {
+    rendered = parse_material_spec(header);
+  } catch (const MaterialError& e) {
+    throw DatabaseError(file + ": its header's material '" + header +
+                        "' is unreadable: " + e.what());
+  }
+  if (rendered.model != g.model)
+    throw DatabaseError(file + ": rendered with model '" + header + "', the manifest's grid is " +
+                        std::string(model_info(g.model).name) + "'s");
+  const std::vector<double> values = g.grid.node_values(node);
+  for (std::size_t d = 0; d < values.size(); ++d)
+    if (rendered.params[d] != values[d]) {
+      char text[160];
+      std::snprintf(text, sizeof text, ": rendered at %s = %.17g, the manifest's grid says %.17g",
+                    std::string(g.grid.specs()[d].name).c_str(), rendered.params[d], values[d]);
+      throw DatabaseError(file + text);
+    }
+}
+
 // An image belongs to the database when its size, its mask and the environment, scene and
-// resolution in its header are the manifest's.
-void check_image(const fs::path& path, const Manifest& m, const Image& diffuse) {
+// resolution in its header are the manifest's (and, for a grid image, its node's parameters).
+void check_image(const fs::path& path, const Manifest& m, const Image& diffuse,
+                 const ProfileGrid* grid = nullptr, std::size_t node = 0) {
   const std::string file = path.string();
   auto in = OIIO::ImageInput::open(file);
   if (!in) throw DatabaseError(file + ": cannot read: " + OIIO::geterror());
@@ -55,6 +85,7 @@ void check_image(const fs::path& path, const Manifest& m, const Image& diffuse) 
   if (attribute(spec, "brdfnav:scene") != m.scene)
     throw DatabaseError(file + ": rendered with scene '" + attribute(spec, "brdfnav:scene") +
                         "', the manifest says '" + m.scene + "'");
+  if (grid) check_node(spec, file, *grid, node);
   in.reset();
   if (diffuse.rgba.empty()) return;
   const Image image = read_image(path);
@@ -107,7 +138,7 @@ Database Database::open(const fs::path& dir) {
   const Image diffuse = read_image(dir / db::kDiffuseFile);
   for (const ProfileGrid& g : m.grids)
     for (std::size_t n = 0; n < g.grid.node_count(); ++n)
-      check_image(dir / db::image_file(g.model, n), m, diffuse);
+      check_image(dir / db::image_file(g.model, n), m, diffuse, &g, n);
   const auto k = std::uint32_t(m.components);
   db::read_table(dir / db::kSingularValuesFile, 1, k);
   db::read_table(dir / db::kBasisFile, std::uint32_t(covered_count(diffuse)), k);

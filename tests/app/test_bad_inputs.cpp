@@ -191,6 +191,10 @@ TEST_F(BadInputs, DamagedDatabases) {
   d = damaged("swapped_manifest", {"checksum mismatch"});
   fs::copy_file(other / manifest, d / manifest, fs::copy_options::overwrite_existing);
 
+  // A grid value edited in the manifest (which no checksum covers): the images say otherwise.
+  d = damaged("edited_grid", {"rendered at eta = 4, the manifest's grid says 4.5"});
+  replace_in_file(d / manifest, "eta: [1.5, 4]", "eta: [1.5, 4.5]");
+
   // Found by tests/fuzz: a manifest naming a file outside the database (reading /dev/zero never
   // ended), and grids far larger than the files listed (billions of names).
   d = damaged("lists_dev_zero", {"manifest.yaml: lists the file /dev/zero"});
