@@ -5,7 +5,7 @@
 #include "bench_load.h"
 #include "bench_navigator.h"
 
-#include <brdfnav/navigator.h>
+#include <brdfnav/navigator/navigator.h>
 
 #include <atomic>
 #include <chrono>

@@ -3,9 +3,9 @@
 #include "bench_navigator.h"
 
 #include <brdfnav/core/statistics.h>
-#include <brdfnav/navigator.h>
+#include <brdfnav/navigator/navigator.h>
+#include <brdfnav/navigator/thumbnails.h>
 #include <brdfnav/ocio/color_pipeline.h>
-#include <brdfnav/thumbnails.h>
 
 #include <algorithm>
 #include <chrono>

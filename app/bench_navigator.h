@@ -2,8 +2,8 @@
 #pragma once
 
 #include <brdfnav/core/material.h>
-#include <brdfnav/precompute/database.h>
-#include <brdfnav/thumbnails.h>
+#include <brdfnav/navigator/database.h>
+#include <brdfnav/navigator/thumbnails.h>
 
 #include <string>
 #include <vector>

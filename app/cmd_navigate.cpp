@@ -5,11 +5,11 @@
 #include "commands.h"
 
 #include <brdfnav/io/material_yaml.h>
-#include <brdfnav/io/navigation_yaml.h>
-#include <brdfnav/navigator.h>
+#include <brdfnav/navigator/navigation_yaml.h>
+#include <brdfnav/navigator/navigator.h>
+#include <brdfnav/navigator/thumbnails.h>
 #include <brdfnav/ocio/color_pipeline.h>
 #include <brdfnav/ocio/contact_sheet.h>
-#include <brdfnav/thumbnails.h>
 
 #include <algorithm>
 #include <cmath>

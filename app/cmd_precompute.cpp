@@ -59,17 +59,7 @@ void add_merge_command(CLI::App& precompute) {
   merge->add_option("--threads", *threads, "Worker threads (0: all)")
       ->check(CLI::NonNegativeNumber);
   merge->callback([=] {
-    // The profile, environment and scene are the first shard's; merge_shards checks the others.
-    const ShardOrigin origin = read_shard_origin(shards->front());
-    PrecomputeRequest request{make_profile(origin.profile), *out, false, *threads,
-                              stderr_observer()};
-    request.profile.resolution = origin.resolution;
-    SceneOptions scene;
-    scene.env = origin.env_path;
-    scene.scene = origin.scene;
-    const EnvMap env = load_env(scene);
-    const Scene geometry = load_scene(scene);
-    merge_shards({shards->begin(), shards->end()}, request, env, geometry);
+    merge_recorded_shards({shards->begin(), shards->end()}, *out, *threads, stderr_observer());
   });
 }
 

@@ -24,7 +24,7 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
 }
 
 Scene load_scene(const SceneOptions& o) {
-  return o.scene == "sphere" ? Scene::sphere() : Scene::load_obj(o.scene);
+  return Scene::load(o.scene);
 }
 
 void check_output_file(const std::string& path, const std::string& option) {

@@ -17,7 +17,7 @@ add_custom_command(OUTPUT ${web_cpp}
 # The request handling on its own, compiled once for the server and the fuzzer of tests/fuzz.
 add_library(brdfnav_serve_api STATIC serve_api.cpp)
 target_include_directories(brdfnav_serve_api PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(brdfnav_serve_api PUBLIC brdfnav::navigator brdfnav::ocio
+target_link_libraries(brdfnav_serve_api PUBLIC brdfnav::navigator_cxx brdfnav::ocio
                       PRIVATE brdfnav_io nlohmann_json::nlohmann_json OpenImageIO::OpenImageIO)
 
 target_sources(brdfnav_cli PRIVATE cmd_serve.cpp ${web_cpp})

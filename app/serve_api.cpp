@@ -1,7 +1,7 @@
 #include "serve_api.h"
 
 #include <brdfnav/io/material_yaml.h>
-#include <brdfnav/io/navigation_yaml.h>
+#include <brdfnav/navigator/navigation_yaml.h>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>

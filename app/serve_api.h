@@ -3,9 +3,9 @@
 // is a plain value: a status, a content type and a body.
 #pragma once
 
-#include <brdfnav/navigator.h>
+#include <brdfnav/navigator/navigator.h>
+#include <brdfnav/navigator/thumbnails.h>
 #include <brdfnav/ocio/color_pipeline.h>
-#include <brdfnav/thumbnails.h>
 
 #include <cstddef>
 #include <filesystem>

@@ -1,188 +1,50 @@
-// Database::open(): verification of a database directory and loading of its tables.
-#include "database_format.h"
+// What the builder reloads of a finished build: the environment map a database or a shard
+// records, and the merge of recorded shards (the settings come from the shards, not the caller).
+#include <brdfnav/precompute/database.h>
 
-#include <brdfnav/core/material.h>
+#include <brdfnav/navigator/database_format.h>
 
-#include <OpenImageIO/imageio.h>
-
-#include <algorithm>
-#include <cstdio>
 #include <optional>
 
 namespace brdfnav {
 
-namespace fs = std::filesystem;
-
 namespace {
 
-std::string attribute(const OIIO::ImageSpec& spec, const char* name) {
-  return spec.get_string_attribute(name);
-}
-
-// The manifest lists exactly the files the grids imply, and each exists with its checksum. Only
-// those: a listed name such as /dev/zero or ../../x would send the checksum outside the database
-// (or read forever).
-void check_files(const fs::path& dir, const Manifest& m) {
-  const std::string manifest = (dir / db::kManifestFile).string();
-  const std::vector<std::string> expected = db::database_files(m.grids);
-  for (const std::string& f : expected)
-    if (!m.files.contains(f)) throw DatabaseError(manifest + ": does not list the file " + f);
-  for (const auto& [name, sha] : m.files)
-    if (!std::binary_search(expected.begin(), expected.end(), name))
-      throw DatabaseError(manifest + ": lists the file " + name +
-                          ", which is not part of a database of its grids");
-  for (const auto& [name, sha] : m.files) {
-    const fs::path path = dir / name;
-    if (!fs::exists(path)) throw DatabaseError(path.string() + ": missing");
-    if (file_sha1(path) != sha)
-      throw DatabaseError(path.string() +
-                          ": checksum mismatch (the file is corrupt or from another database)");
-  }
-}
-
-// A grid image was rendered at its node: the parameters in its header's material are the
-// manifest's grid values. The manifest has no checksum of its own, so without this an edited grid
-// value would move every query and conversion silently.
-void check_node(const OIIO::ImageSpec& spec, const std::string& file, const ProfileGrid& g,
-                std::size_t node) {
-  const std::string header = attribute(spec, "brdfnav:material");
-  Material rendered;
+// The map at `path` with the pixels a build recorded (`pixel_sha1`), loaded as any build loaded
+// it: a --sanitize-env build zeroed NaN/Inf texels, and a map that needed it could not have been
+// built without. `recorder` names the file that records it, for the error.
+EnvMap load_recorded_env(const std::string& path, const std::string& pixel_sha1,
+                         const std::string& recorder) {
+  std::optional<EnvMap> env;
   try {
-    rendered = parse_material_spec(header);
-  } catch (const MaterialError& e) {
-    throw DatabaseError(file + ": its header's material '" + header +
-                        "' is unreadable: " + e.what());
+    env = EnvMap::load(path, {.sanitize = true}, [](const std::string&) {});
+  } catch (const EnvMapError& e) {
+    throw DatabaseError(e.what() + (" (the environment map " + recorder + " names)"));
   }
-  if (rendered.model != g.model)
-    throw DatabaseError(file + ": rendered with model '" + header + "', the manifest's grid is " +
-                        std::string(model_info(g.model).name) + "'s");
-  const std::vector<double> values = g.grid.node_values(node);
-  for (std::size_t d = 0; d < values.size(); ++d)
-    if (rendered.params[d] != values[d]) {
-      char text[160];
-      std::snprintf(text, sizeof text, ": rendered at %s = %.17g, the manifest's grid says %.17g",
-                    std::string(g.grid.specs()[d].name).c_str(), rendered.params[d], values[d]);
-      throw DatabaseError(file + text);
-    }
-}
-
-// An image belongs to the database when its size, its mask and the environment, scene and
-// resolution in its header are the manifest's (and, for a grid image, its node's parameters).
-void check_image(const fs::path& path, const Manifest& m, const Image& diffuse,
-                 const ProfileGrid* grid = nullptr, std::size_t node = 0) {
-  const std::string file = path.string();
-  auto in = OIIO::ImageInput::open(file);
-  if (!in) throw DatabaseError(file + ": cannot read: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width != m.resolution || spec.height != m.resolution)
-    throw DatabaseError(file + ": image is " + std::to_string(spec.width) + "x" +
-                        std::to_string(spec.height) + ", the manifest says " +
-                        std::to_string(m.resolution));
-  if (attribute(spec, "brdfnav:env_sha1") != m.env_hash)
-    throw DatabaseError(file + ": rendered under another environment map (pixel SHA-1 " +
-                        attribute(spec, "brdfnav:env_sha1") + ", the manifest says " + m.env_hash +
-                        ")");
-  if (attribute(spec, "brdfnav:scene") != m.scene)
-    throw DatabaseError(file + ": rendered with scene '" + attribute(spec, "brdfnav:scene") +
-                        "', the manifest says '" + m.scene + "'");
-  if (grid) check_node(spec, file, *grid, node);
-  in.reset();
-  if (diffuse.rgba.empty()) return;
-  const Image image = read_image(path);
-  for (std::size_t i = 3; i < image.rgba.size(); i += 4)
-    if ((image.rgba[i] > 0.5f) != (diffuse.rgba[i] > 0.5f))
-      throw DatabaseError(file + ": its mask (alpha) differs from diffuse.exr's");
-}
-
-ModelEmbedding load_embedding(const fs::path& dir, const Manifest& m, const ProfileGrid& g) {
-  const auto cols = std::uint32_t(m.q_nodes.size() * g.grid.node_count() * 3);
-  const db::Table t =
-      db::read_table(dir / db::coefficients_file(g.model), std::uint32_t(m.components), cols);
-  Eigen::MatrixXf c(t.rows, t.cols);
-  for (std::uint32_t i = 0; i < t.rows; ++i)
-    for (std::uint32_t j = 0; j < t.cols; ++j) c(i, j) = t.at(i, j);
-  return ModelEmbedding(g.model, g.grid, m.q_nodes, std::move(c));
-}
-
-ConversionTable load_conversion(const fs::path& dir, const ProfileGrid& a, ModelId to) {
-  const std::size_t cols = db::conversion_columns(to), dims = cols - 5;
-  const db::Table t = db::read_table(dir / db::conversion_file(a.model, to),
-                                     std::uint32_t(a.grid.node_count()), std::uint32_t(cols));
-  ConversionTable table{a.model, to, {}};
-  for (std::size_t n = 0; n < t.rows; ++n) {
-    Conversion c;
-    for (std::size_t i = 0; i < dims; ++i) c.params.push_back(t.at(n, i));
-    c.scale = Rgb(t.at(n, dims), t.at(n, dims + 1), t.at(n, dims + 2));
-    c.relative_error = t.at(n, cols - 2);
-    c.image_distance = t.at(n, cols - 1);
-    table.nodes.push_back(std::move(c));
-  }
-  return table;
-}
-
-std::size_t covered_count(const Image& image) {
-  std::size_t n = 0;
-  for (std::size_t i = 3; i < image.rgba.size(); i += 4) n += image.rgba[i] > 0.5f;
-  return n;
+  if (env->pixel_hash() != pixel_sha1)
+    throw DatabaseError(path + ": changed since the database was built (pixel sha1 " +
+                        env->pixel_hash() + ", " + recorder + " says " + pixel_sha1 + ")");
+  return std::move(*env);
 }
 
 }  // namespace
 
-Database Database::open(const fs::path& dir) {
-  Database db;
-  db.dir_ = dir;
-  db.manifest_ = db::read_manifest(dir / db::kManifestFile);
-  const Manifest& m = db.manifest_;
-  check_files(dir, m);
-  check_image(dir / db::kDiffuseFile, m, Image());
-  const Image diffuse = read_image(dir / db::kDiffuseFile);
-  for (const ProfileGrid& g : m.grids)
-    for (std::size_t n = 0; n < g.grid.node_count(); ++n)
-      check_image(dir / db::image_file(g.model, n), m, diffuse, &g, n);
-  const auto k = std::uint32_t(m.components);
-  db::read_table(dir / db::kSingularValuesFile, 1, k);
-  db::read_table(dir / db::kBasisFile, std::uint32_t(covered_count(diffuse)), k);
-  for (const ProfileGrid& a : m.grids) {
-    db.embeddings_.push_back(load_embedding(dir, m, a));
-    for (const ProfileGrid& b : m.grids)
-      if (b.model != a.model) db.conversions_.push_back(load_conversion(dir, a, b.model));
-  }
-  return db;
-}
-
-const ModelEmbedding* Database::embedding(ModelId id) const {
-  for (const ModelEmbedding& e : embeddings_)
-    if (e.model() == id) return &e;
-  return nullptr;
-}
-
-const ConversionTable* Database::conversion(ModelId from, ModelId to) const {
-  for (const ConversionTable& t : conversions_)
-    if (t.from == from && t.to == to) return &t;
-  return nullptr;
-}
-
-fs::path Database::image_path(ModelId id, std::size_t node) const {
-  return dir_ / db::image_file(id, node);
-}
-
-fs::path Database::diffuse_path() const {
-  return dir_ / db::kDiffuseFile;
-}
-
 EnvMap load_database_env(const Database& db) {
   const Manifest& m = db.manifest();
-  const std::string manifest = (db.dir() / db::kManifestFile).string();
-  std::optional<EnvMap> env;
-  try {
-    env = EnvMap::load(m.env_path, {.sanitize = true});
-  } catch (const EnvMapError& e) {
-    throw DatabaseError(e.what() + (" (the environment map " + manifest + " names)"));
-  }
-  if (env->pixel_hash() != m.env_hash)
-    throw DatabaseError(m.env_path + ": changed since the database was built (pixel sha1 " +
-                        env->pixel_hash() + ", " + manifest + " says " + m.env_hash + ")");
-  return std::move(*env);
+  return load_recorded_env(m.env_path, m.env_hash, (db.dir() / db::kManifestFile).string());
+}
+
+void merge_recorded_shards(const std::vector<std::filesystem::path>& shards,
+                           const std::filesystem::path& out, int threads,
+                           const PrecomputeObserver& observer) {
+  if (shards.empty()) throw DatabaseError("precompute merge: no shard given");
+  // The profile, environment and scene are the first shard's; merge_shards checks the others.
+  const ShardOrigin origin = read_shard_origin(shards.front());
+  PrecomputeRequest request{make_profile(origin.profile), out, false, threads, observer};
+  request.profile.resolution = origin.resolution;
+  const EnvMap env = load_recorded_env(origin.env_path, origin.env_hash,
+                                       (shards.front() / db::kShardFile).string());
+  merge_shards(shards, request, env, Scene::load(origin.scene));
 }
 
 }  // namespace brdfnav

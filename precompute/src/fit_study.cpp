@@ -154,9 +154,9 @@ FitStudy fit_study(const Database& db, int per_pair, std::uint32_t seed) {
         converted.rho_s = c.scale;
         const Eigen::VectorXf by_brdf = b->embed(converted);
         const ImageFit fit = fit_in_embedding(*b, target, c.params);
-        brdf.push_back(Embedding::distance(target, by_brdf));
+        brdf.push_back(embedding_distance(target, by_brdf));
         image.push_back(fit.distance);
-        between.push_back(Embedding::distance(by_brdf, b->embed(fit.material)));
+        between.push_back(embedding_distance(by_brdf, b->embed(fit.material)));
         if (image.back() > 0) ratios.push_back(brdf.back() / image.back());
       }
       study.pairs.push_back({from.id, to.id, per_pair, quantile(brdf, 0.5), quantile(image, 0.5),

@@ -1,6 +1,6 @@
 #include <brdfnav/precompute/pca.h>
 
-#include <brdfnav/precompute/parallel_for.h>
+#include <brdfnav/core/parallel_for.h>
 
 #include <Eigen/QR>
 #include <Eigen/SVD>

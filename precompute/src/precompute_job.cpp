@@ -1,9 +1,10 @@
 // precompute_database(): the build of a database in three resumable phases (render, embed, fit)
 // and its atomic completion (manifest, rename).
-#include <brdfnav/precompute/parallel_for.h>
-#include "database_format.h"
+#include <brdfnav/precompute/database.h>
 
 #include <brdfnav/core/atomic_file.h>
+#include <brdfnav/core/parallel_for.h>
+#include <brdfnav/navigator/database_format.h>
 #include <brdfnav/precompute/render.h>
 
 #include <chrono>
@@ -31,6 +32,41 @@ std::string read_text(const fs::path& path) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// How a build with these inputs is made, as the manifest records it.
+db::BuildSettings build_settings(const Profile& p, const EnvMap& env, const Scene& scene) {
+  db::BuildSettings s;
+  s.generator = "brdfnav " BRDFNAV_VERSION;
+  s.renderer_revision = kRendererRevision;
+  s.profile = p.name;
+  s.resolution = p.resolution;
+  s.scene = scene.description();
+  s.env_path = env.source();
+  s.env_pixel_sha1 = env.pixel_hash();
+  s.env_width = env.width();
+  s.env_height = env.height();
+  s.q_nodes = diffuse_fraction_nodes(p.q_nodes);
+  s.grids = p.grids;
+  const RenderQuality& q = p.quality;
+  s.options = {{"render_quality",
+                {{"texels_per_width", q.texels_per_width},
+                 {"hot_texels_per_width", q.hot_texels_per_width},
+                 {"max_node", q.max_node},
+                 {"reach", q.reach},
+                 {"max_split", std::int64_t{q.max_split}},
+                 {"max_nodes", std::int64_t{q.max_nodes}}}},
+               {"pca",
+                {{"components", std::int64_t{p.pca.components}},
+                 {"oversample", std::int64_t{p.pca.oversample}},
+                 {"power_iterations", std::int64_t{p.pca.power_iterations}},
+                 {"seed", std::uint64_t{p.pca.seed}}}},
+               {"fit",
+                {{"n_wo", std::int64_t{p.fit.n_wo}},
+                 {"n_wi", std::int64_t{p.fit.n_wi}},
+                 {"starts", std::int64_t{p.fit.starts}},
+                 {"max_iterations", std::int64_t{p.fit.max_iterations}}}}};
+  return s;
 }
 
 // The material of a grid node's specular image: rho_d = 0, rho_s = 1.
@@ -128,7 +164,7 @@ class Job {
   void prepare() {
     if (fs::exists(r_.out))
       throw DatabaseError(r_.out.string() + ": already exists; remove it or choose another --out");
-    const std::string settings = db::settings_yaml(p_, env_, scene_);
+    const std::string settings = db::settings_yaml(build_settings(p_, env_, scene_));
     const fs::path settings_path = at(db::kSettingsFile);
     if (fs::exists(work_) && r_.resume && fs::exists(settings_path)) {
       if (read_text(settings_path) != settings)
@@ -243,12 +279,11 @@ class Job {
 
   // A shard: its images and shard.yaml (the settings, i/N and the images' checksums).
   void finish_shard() {
-    std::string text = db::settings_yaml(p_, env_, scene_);
-    text += "shard: " + std::to_string(r_.shard_index) + "/" + std::to_string(r_.shard_count) +
-            "\nfiles:\n";
+    db::FileSums sums;
     for (const std::string& f : db::database_files(p_.grids))
-      if (f.ends_with(".exr") && fs::exists(at(f)))
-        text += "  " + f + ": " + file_sha1(at(f)) + "\n";
+      if (f.ends_with(".exr") && fs::exists(at(f))) sums[f] = file_sha1(at(f));
+    const std::string text =
+        db::shard_yaml(build_settings(p_, env_, scene_), r_.shard_index, r_.shard_count, sums);
     write_file_atomic(at(db::kShardFile), text);
     fs::remove(at(db::kSettingsFile));
     std::error_code ec;
@@ -310,24 +345,10 @@ class Job {
     }
   }
 
-  int components() const {
-    std::ifstream in(at(db::kSingularValuesFile), std::ios::binary);
-    std::uint32_t dims[2] = {0, 0};
-    in.seekg(8);
-    in.read(reinterpret_cast<char*>(dims), sizeof dims);
-    if (!in) throw DatabaseError(at(db::kSingularValuesFile).string() + ": unreadable");
-    return int(dims[1]);
-  }
+  int components() const { return int(db::read_table_shape(at(db::kSingularValuesFile)).second); }
 
   ModelEmbedding load_embedding(const ProfileGrid& g) const {
-    const std::vector<double> q = diffuse_fraction_nodes(p_.q_nodes);
-    const auto k = std::uint32_t(components());
-    const auto cols = std::uint32_t(q.size() * g.grid.node_count() * 3);
-    const db::Table t = db::read_table(at(db::coefficients_file(g.model)), k, cols);
-    Eigen::MatrixXf c(k, cols);
-    for (std::uint32_t i = 0; i < k; ++i)
-      for (std::uint32_t j = 0; j < cols; ++j) c(i, j) = t.at(i, j);
-    return ModelEmbedding(g.model, g.grid, q, std::move(c));
+    return db::read_model_embedding(work_, diffuse_fraction_nodes(p_.q_nodes), components(), g);
   }
 
   void fit_conversions() {
@@ -368,7 +389,7 @@ class Job {
       const Material source = node_material(a.model(), a.grid().node_values(n));
       const LobeFit fit = fit_lobe(make_lobe(source.model, source.params), b.model(), p_.fit);
       const Material fitted = node_material(b.model(), fit.params, fit.scale);
-      const double d = Embedding::distance(a.embed(source), b.embed(fitted));
+      const double d = embedding_distance(a.embed(source), b.embed(fitted));
       float* row = &t.values[n * cols];
       for (std::size_t i = 0; i < fit.params.size(); ++i) row[i] = float(fit.params[i]);
       for (int c = 0; c < 3; ++c) row[fit.params.size() + c] = float(fit.scale[c]);
@@ -384,14 +405,15 @@ class Job {
   // settings, temporaries of an interrupted run) and renames the directory into place.
   void finish() {
     const std::vector<std::string> files = db::database_files(p_.grids);
-    std::map<std::string, std::string> sums;
+    db::FileSums sums;
     std::size_t done = 0;
     for (const std::string& f : files) {
       sums[f] = file_sha1(at(f));
       progress("checksums", ++done, files.size());
     }
     const fs::path manifest = at(db::kManifestFile);
-    write_file_atomic(manifest, db::manifest_yaml(p_, env_, scene_, components(), sums));
+    write_file_atomic(manifest,
+                      db::manifest_yaml(build_settings(p_, env_, scene_), components(), sums));
     std::vector<fs::path> stray;
     for (const fs::directory_entry& e : fs::recursive_directory_iterator(work_)) {
       const std::string rel = fs::relative(e.path(), work_).generic_string();
@@ -459,7 +481,7 @@ void merge_shards(const std::vector<fs::path>& shards, const PrecomputeRequest& 
   if (fs::exists(request.out))
     throw DatabaseError(request.out.string() +
                         ": already exists; remove it or choose another --out");
-  const std::string settings = db::settings_yaml(request.profile, env, scene);
+  const std::string settings = db::settings_yaml(build_settings(request.profile, env, scene));
   const fs::path work = request.out.string() + ".partial";
   fs::remove_all(work);
   fs::create_directories(work);

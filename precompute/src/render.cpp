@@ -1,6 +1,6 @@
 #include <brdfnav/precompute/render.h>
 
-#include <brdfnav/precompute/parallel_for.h>
+#include <brdfnav/core/parallel_for.h>
 #include "geometry.h"
 #include "quadrature.h"
 #include "ward_grid.h"

@@ -229,6 +229,10 @@ Scene Scene::sphere() {
   return Scene(std::move(impl));
 }
 
+Scene Scene::load(const std::string& description) {
+  return description == "sphere" ? sphere() : load_obj(description);
+}
+
 Scene Scene::load_obj(const std::filesystem::path& path) {
   auto impl = std::make_unique<Impl>();
   impl->description = path.string();

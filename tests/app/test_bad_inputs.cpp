@@ -142,6 +142,37 @@ TEST_F(BadInputs, NegativeOrSanitizedTexelsRenderWithOneWarning) {
       << r.err;
 }
 
+// A merge reloads the map as the shards' build loaded it: shards of a --sanitize-env build merge
+// into the database a single --sanitize-env build makes (the merge once reloaded the map without
+// sanitizing and refused it), and a map changed since the shards were made is refused by name.
+TEST_F(BadInputs, ShardsOfASanitizedMapMerge) {
+  const fs::path nan =
+      write_map("nan_shards.exr", 16, 8, 3, 1.f, std::numeric_limits<float>::quiet_NaN());
+  const fs::path dir = out_dir("sanitized_shards");
+  const std::string build =
+      "precompute --profile smoke --res 8 --sanitize-env --env " + nan.string();
+  for (int i = 0; i < 2; ++i) {
+    const CliResult r = run_cli(build + " --shard " + std::to_string(i) + "/2 --out " +
+                                (dir / ("shard" + std::to_string(i))).string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const std::string merge =
+      "precompute merge " + (dir / "shard0").string() + " " + (dir / "shard1").string() + " --out ";
+  CliResult r = run_cli(merge + (dir / "merged").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_cli(build + " --out " + (dir / "single").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_text(dir / "merged" / "manifest.yaml"),
+            read_text(dir / "single" / "manifest.yaml"));
+
+  write_map("nan_shards.exr", 16, 8, 3, 2.f, std::numeric_limits<float>::quiet_NaN());
+  r = run_cli(merge + (dir / "merged_again").string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find(nan.string() + ": changed since the database was built"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("shard.yaml"), std::string::npos) << r.err;
+}
+
 TEST_F(BadInputs, DamagedDatabases) {
   const std::string manifest = "manifest.yaml";
   struct Case {

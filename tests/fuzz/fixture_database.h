@@ -5,7 +5,7 @@
 
 #include "fuzz_target.h"
 
-#include <brdfnav/precompute/database.h>
+#include <brdfnav/navigator/database.h>
 
 namespace brdfnav::fuzz {
 

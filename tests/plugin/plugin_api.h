@@ -1,5 +1,7 @@
-// libbrdfnav.so as a host sees it: dlopen() the built library (BRDFNAV_PLUGIN_PATH), check the
-// ABI version first and resolve every entry point of brdfnav.h with dlsym().
+// The C ABIs as a host sees them: dlopen() the built library, check its ABI version first and
+// resolve every entry point of its header with dlsym(). api() is libbrdfnav.so (brdfnav.h,
+// BRDFNAV_PLUGIN_PATH), navigator_api() libbrdfnav_navigator.so (brdfnav_navigator.h,
+// BRDFNAV_NAVIGATOR_PATH, when the test defines it).
 #pragma once
 
 #include <brdfnav/brdfnav.h>
@@ -8,9 +10,13 @@
 #include <stdexcept>
 #include <string>
 
+#ifdef BRDFNAV_NAVIGATOR_PATH
+#include <brdfnav/brdfnav_navigator.h>
+#endif
+
 namespace brdfnav::test {
 
-// Every entry point after brdfnav_abi_version, by its name without the brdfnav_ prefix.
+// Every entry point after the version function, by its name without the brdfnav_ prefix.
 // One entry point a line, which clang-format would run together.
 // clang-format off
 #define BRDFNAV_ENTRY_POINTS(X) \
@@ -26,7 +32,9 @@ namespace brdfnav::test {
   X(closure_colorspace) \
   X(closure_eval) \
   X(closure_sample) \
-  X(closure_pdf) \
+  X(closure_pdf)
+#define BRDFNAV_NAVIGATOR_ENTRY_POINTS(X) \
+  X(navigator_geterror) \
   X(navigator_open) \
   X(navigator_close) \
   X(navigator_neighbors) \
@@ -37,11 +45,16 @@ namespace brdfnav::test {
   X(neighbors_free)
 // clang-format on
 
-struct Api {
 #define BRDFNAV_DECLARE(name) decltype(&::brdfnav_##name) name = nullptr;
+struct Api {
   BRDFNAV_ENTRY_POINTS(BRDFNAV_DECLARE)
-#undef BRDFNAV_DECLARE
 };
+#ifdef BRDFNAV_NAVIGATOR_PATH
+struct NavigatorApi {
+  BRDFNAV_NAVIGATOR_ENTRY_POINTS(BRDFNAV_DECLARE)
+};
+#endif
+#undef BRDFNAV_DECLARE
 
 template <typename Function>
 Function resolve(void* library, const char* name) {
@@ -50,23 +63,45 @@ Function resolve(void* library, const char* name) {
   return symbol;
 }
 
-// Loads the library once per process; throws with the reason when a host would refuse it.
+// dlopen()s `path` as a host would and checks its version function against `expected`; throws
+// with the reason when a host would refuse the library.
+inline void* open_library(const char* path, const char* version_function, int expected) {
+  void* library = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+  if (!library) throw std::runtime_error(std::string("dlopen: ") + dlerror());
+  const int version = resolve<int (*)()>(library, version_function)();
+  if (version != expected)
+    throw std::runtime_error(std::string(path) + ": ABI version " + std::to_string(version) +
+                             ", expected " + std::to_string(expected));
+  return library;
+}
+
+#define BRDFNAV_RESOLVE(name) a.name = resolve<decltype(a.name)>(library, "brdfnav_" #name);
+
+// Loads libbrdfnav.so once per process.
 inline const Api& api() {
   static const Api loaded = [] {
-    void* library = dlopen(BRDFNAV_PLUGIN_PATH, RTLD_NOW | RTLD_LOCAL);
-    if (!library) throw std::runtime_error(std::string("dlopen: ") + dlerror());
-    const auto abi_version =
-        resolve<decltype(&::brdfnav_abi_version)>(library, "brdfnav_abi_version");
-    if (abi_version() != BRDFNAV_ABI_VERSION)
-      throw std::runtime_error("ABI version " + std::to_string(abi_version()) + ", expected " +
-                               std::to_string(BRDFNAV_ABI_VERSION));
+    void* library = open_library(BRDFNAV_PLUGIN_PATH, "brdfnav_abi_version", BRDFNAV_ABI_VERSION);
     Api a;
-#define BRDFNAV_RESOLVE(name) a.name = resolve<decltype(a.name)>(library, "brdfnav_" #name);
     BRDFNAV_ENTRY_POINTS(BRDFNAV_RESOLVE)
-#undef BRDFNAV_RESOLVE
     return a;
   }();
   return loaded;
 }
+
+#ifdef BRDFNAV_NAVIGATOR_PATH
+// Loads libbrdfnav_navigator.so once per process.
+inline const NavigatorApi& navigator_api() {
+  static const NavigatorApi loaded = [] {
+    void* library = open_library(BRDFNAV_NAVIGATOR_PATH, "brdfnav_navigator_abi_version",
+                                 BRDFNAV_NAVIGATOR_ABI_VERSION);
+    NavigatorApi a;
+    BRDFNAV_NAVIGATOR_ENTRY_POINTS(BRDFNAV_RESOLVE)
+    return a;
+  }();
+  return loaded;
+}
+#endif
+
+#undef BRDFNAV_RESOLVE
 
 }  // namespace brdfnav::test

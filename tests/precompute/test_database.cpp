@@ -132,7 +132,7 @@ TEST(Database, EmbeddingReproducesTheMetricOfItsImages) {
   a.rho_d = b.rho_d = Rgb::Zero(), a.rho_s = b.rho_s = Rgb::Ones();
   const double exact = image_distance(read_image(db.image_path(ModelId::ward, 2)),
                                       read_image(db.image_path(ModelId::blinn_phong, 1)));
-  const double embedded = Embedding::distance(ward.embed(a), phong.embed(b));
+  const double embedded = embedding_distance(ward.embed(a), phong.embed(b));
   EXPECT_NEAR(embedded, exact, 1e-4 * exact);
 }
 
@@ -153,7 +153,7 @@ TEST(Database, ConversionsAreFitsWithTheirImageDistance) {
     a.params = from.grid().node_values(n), b.params = c.params;
     a.rho_d = b.rho_d = Rgb::Zero(), a.rho_s = Rgb::Ones(), b.rho_s = c.scale;
     // The stored params are float32: the distance is recomputed from rounded parameters.
-    EXPECT_NEAR(Embedding::distance(from.embed(a), to.embed(b)), c.image_distance, 1e-3);
+    EXPECT_NEAR(embedding_distance(from.embed(a), to.embed(b)), c.image_distance, 1e-3);
   }
   // cz = 1/sqrt(3) is exactly a Phong lobe: Blinn-Phong fits it far better than the tilted lobe.
   EXPECT_LT(t.nodes[1].relative_error, t.nodes[0].relative_error);

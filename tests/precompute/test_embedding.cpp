@@ -62,12 +62,12 @@ TEST(Embedding, IsExactOnTheGridForColouredMaterials) {
   const Material c = material(ModelId::ward, {0.3, 0.02}, Rgb(0.2, 0.2, 0.2), Rgb::Zero());
   for (const auto& [x, y] : {std::pair{a, c}, std::pair{a, a}}) {
     const double exact = image_distance(f.renderer.render(x), f.renderer.render(y));
-    const double embedded = Embedding::distance(f.of(x.model).embed(x), f.of(y.model).embed(y));
+    const double embedded = embedding_distance(f.of(x.model).embed(x), f.of(y.model).embed(y));
     EXPECT_NEAR(embedded, exact, 1e-4 * exact + 1e-6);
   }
   // Cross-model with an off-node q: interpolation along q only (a few percent at most).
   const double exact = image_distance(f.renderer.render(a), f.renderer.render(b));
-  const double embedded = Embedding::distance(f.of(a.model).embed(a), f.of(b.model).embed(b));
+  const double embedded = embedding_distance(f.of(a.model).embed(a), f.of(b.model).embed(b));
   EXPECT_NEAR(embedded, exact, 0.05 * exact);
 }
 
@@ -94,7 +94,7 @@ TEST(Embedding, InterpolatesBetweenNodes) {
     };
     const Material a = m(), b = m();
     const double exact = image_distance(f.renderer.render(a), f.renderer.render(b));
-    const double embedded = Embedding::distance(f.of(a.model).embed(a), f.of(b.model).embed(b));
+    const double embedded = embedding_distance(f.of(a.model).embed(a), f.of(b.model).embed(b));
     errors.push_back(std::abs(embedded - exact) / exact);
   }
   // The upper of the two middle errors of the eight is below 5%: five of them are.

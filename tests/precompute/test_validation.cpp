@@ -115,7 +115,7 @@ TEST(Validation, TruncatedDistanceKeepsTheFirstCoefficientsOfEachChannel) {
   Eigen::VectorXf a(6), b(6);
   a << 1, 5, 2, 7, 3, 9;  // channels (1, 5), (2, 7), (3, 9)
   b.setZero();
-  EXPECT_NEAR(truncated_distance(a, b, 2), Embedding::distance(a, b), 1e-6);
+  EXPECT_NEAR(truncated_distance(a, b, 2), embedding_distance(a, b), 1e-6);
   EXPECT_NEAR(truncated_distance(a, b, 1), std::sqrt(1.0 + 4 + 9), 1e-6);
 }
 

@@ -1,6 +1,8 @@
 /* brdfnav C ABI: the analytic BRDF models of brdfnav (Blinn-Phong, Ward, Cook-Torrance,
- * Lafortune, He et al.) as closures that a renderer or tool loads from libbrdfnav.so, and the
- * navigator that offers a material's variations at equal visual distance (since ABI 2).
+ * Lafortune, He et al.) as closures that a renderer or tool loads from libbrdfnav.so, which
+ * needs nothing but the C and C++ runtimes and yaml-cpp. The navigator, which offers a
+ * material's variations at equal visual distance, is a library of its own
+ * (brdfnav/brdfnav_navigator.h, libbrdfnav_navigator.so).
  *
  * Conventions
  * - Hosts that load the library at run time call brdfnav_abi_version() first and use nothing
@@ -20,8 +22,9 @@
 
 #include <stddef.h>
 
-/* 2: adds the navigator (brdfnav_navigator_*, brdfnav_neighbors_*, BRDFNAV_ERROR_DATABASE). */
-#define BRDFNAV_ABI_VERSION 2
+/* 2: added the navigator (brdfnav_navigator_*, brdfnav_neighbors_*, BRDFNAV_ERROR_DATABASE).
+ * 3: the navigator moved to libbrdfnav_navigator.so (brdfnav_navigator.h); closures unchanged. */
+#define BRDFNAV_ABI_VERSION 3
 
 #if defined(__GNUC__)
 #define BRDFNAV_API __attribute__((visibility("default")))
@@ -48,7 +51,7 @@ typedef enum brdfnav_status {
   /* An unexpected failure inside the library (a bug: please report the message). */
   BRDFNAV_ERROR_INTERNAL = 5,
   /* A navigation database that is missing, unreadable, corrupt or inconsistent; the message
-   * names the file. */
+   * names the file (libbrdfnav_navigator.so only). */
   BRDFNAV_ERROR_DATABASE = 6
 } brdfnav_status;
 
@@ -143,67 +146,6 @@ BRDFNAV_API brdfnav_status brdfnav_closure_sample(const brdfnav_closure* closure
 /* Solid-angle density of brdfnav_closure_sample() over its non-delta components. */
 BRDFNAV_API brdfnav_status brdfnav_closure_pdf(const brdfnav_closure* closure, const double wi[3],
                                                const double wo[3], double* pdf);
-
-/* Navigation (docs/NAVIGATION.md): a navigator opens a database made by `brdfnav precompute`
- * once; each query returns a list of neighbours of a material at embedded distance `radius`
- * (the cube-root RMS metric) in one tab of the interface. A navigator may be queried from any
- * number of threads at once; a list is immutable. Strings and arrays a list hands out live
- * until brdfnav_neighbors_free(). */
-typedef enum brdfnav_tab {
-  BRDFNAV_TAB_LOBE = 0,     /* each non-linear parameter up and down: labels "alpha_x+", ... */
-  BRDFNAV_TAB_DIFFUSE = 1,  /* rho_d along CIELAB: "L+", "L-", "ab+0", "ab+45", ... "ab+315" */
-  BRDFNAV_TAB_SPECULAR = 2, /* rho_s, the same directions */
-  BRDFNAV_TAB_MODELS = 3,   /* other models' neighbours, one per cluster: label = model name */
-  BRDFNAV_TAB_GALLERY = 4   /* the most different materials of the database */
-} brdfnav_tab;
-
-/* brdfnav_neighbor.flags */
-#define BRDFNAV_NEIGHBOR_AT_BOUNDARY 1u /* a parameter reached its range's end before radius */
-#define BRDFNAV_NEIGHBOR_CLAMPED 2u     /* the colour reached its valid range's end before radius */
-
-typedef struct brdfnav_neighbor {
-  brdfnav_tab tab;
-  const char* label;
-  double distance;           /* embedded distance from the current material */
-  unsigned flags;            /* BRDFNAV_NEIGHBOR_* bits */
-  brdfnav_material material; /* every parameter given; pointers into the list */
-} brdfnav_neighbor;
-
-typedef struct brdfnav_navigator brdfnav_navigator; /* opaque */
-typedef struct brdfnav_neighbors brdfnav_neighbors; /* opaque: a list of neighbours */
-
-/* Opens and verifies a database directory (BRDFNAV_ERROR_DATABASE naming the file when it is
- * missing or damaged). Sets *out to NULL on failure. */
-BRDFNAV_API brdfnav_status brdfnav_navigator_open(const char* database_dir,
-                                                  brdfnav_navigator** out);
-/* Accepts NULL. Every list it returned stays valid. */
-BRDFNAV_API void brdfnav_navigator_close(brdfnav_navigator* navigator);
-
-/* The neighbours of `current` in `tab` at distance `radius` (finite, >= 1e-4: kMinRadius).
- * `clusters` (>= 1) is the most neighbours the models and gallery tabs return (8 in the paper). A
- * model the database does not hold, a material in a colour space other than lin_rec709 (the
- * database's) and a bad radius or cluster count are BRDFNAV_ERROR_INVALID_ARGUMENT. Sets *out to
- * NULL on failure. */
-BRDFNAV_API brdfnav_status brdfnav_navigator_neighbors(const brdfnav_navigator* navigator,
-                                                       const brdfnav_material* current,
-                                                       double radius, brdfnav_tab tab, int clusters,
-                                                       brdfnav_neighbors** out);
-/* The same with the material as a YAML file or inline spec (as brdfnav_closure_load()). */
-BRDFNAV_API brdfnav_status brdfnav_navigator_neighbors_load(const brdfnav_navigator* navigator,
-                                                            const char* path_or_spec, double radius,
-                                                            brdfnav_tab tab, int clusters,
-                                                            brdfnav_neighbors** out);
-/* The start gallery: `count` (>= 1) maximally different materials; distances are from the
- * gallery's matte grey reference. Sets *out to NULL on failure. */
-BRDFNAV_API brdfnav_status brdfnav_navigator_gallery(const brdfnav_navigator* navigator, int count,
-                                                     brdfnav_neighbors** out);
-
-BRDFNAV_API brdfnav_status brdfnav_neighbors_count(const brdfnav_neighbors* list, size_t* count);
-/* Neighbour `index` (0 .. count - 1); out->material can be passed to brdfnav_closure_create(). */
-BRDFNAV_API brdfnav_status brdfnav_neighbors_get(const brdfnav_neighbors* list, size_t index,
-                                                 brdfnav_neighbor* out);
-/* Accepts NULL. */
-BRDFNAV_API void brdfnav_neighbors_free(brdfnav_neighbors* list);
 
 #ifdef __cplusplus
 }

@@ -5,6 +5,7 @@
 
 #include <brdfnav/core/grid.h>
 #include <brdfnav/core/models.h>
+#include <brdfnav/navigator/database.h>
 #include <brdfnav/precompute/fit.h>
 #include <brdfnav/precompute/pca.h>
 #include <brdfnav/precompute/render.h>
@@ -18,12 +19,6 @@ namespace brdfnav {
 class ProfileError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
-};
-
-// One model's grid in a profile.
-struct ProfileGrid {
-  ModelId model;
-  ParamGrid grid;
 };
 
 struct Profile {

@@ -10,8 +10,8 @@
 #pragma once
 
 #include <brdfnav/core/material.h>
+#include <brdfnav/navigator/image.h>
 #include <brdfnav/precompute/env_map.h>
-#include <brdfnav/precompute/image.h>
 #include <brdfnav/precompute/scene.h>
 
 #include <cstdint>

@@ -48,6 +48,9 @@ class Scene {
   // sphere. Vertex normals are interpolated when every face has them, else faces are flat.
   // Surfaces are two-sided. Throws SceneError naming the file.
   static Scene load_obj(const std::filesystem::path& path);
+  // The scene a description() names: "sphere", else an OBJ path (what --scene takes and a
+  // manifest records).
+  static Scene load(const std::string& description);
 
   Scene(Scene&&) noexcept;
   Scene& operator=(Scene&&) noexcept;

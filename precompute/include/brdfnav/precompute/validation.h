@@ -5,8 +5,8 @@
 #pragma once
 
 #include <brdfnav/core/material.h>
+#include <brdfnav/navigator/image.h>
 #include <brdfnav/precompute/database.h>
-#include <brdfnav/precompute/image.h>
 #include <brdfnav/precompute/render.h>
 
 #include <Eigen/Core>

@@ -1,8 +1,8 @@
-// parallel_for() (brdfnav/precompute/parallel_for.h), which the renderer, the PCA and the
+// parallel_for() (brdfnav/core/parallel_for.h), which the renderer, the PCA and the
 // conversion fits run on: every task once, on a worker id below the thread count, progress on the
 // calling thread only and ending at the count, and the first exception rethrown after the workers
 // stop.
-#include <brdfnav/precompute/parallel_for.h>
+#include <brdfnav/core/parallel_for.h>
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,10 @@
-// The navigator through the C ABI of a dlopen()ed libbrdfnav.so (plugin_api.h), against the C++
-// navigator linked into this test: the same neighbours, the ABI's statuses and messages.
-#include "navigator_fixture.h"
-#include "plugin_api.h"
+// The navigator through the C ABI of a dlopen()ed libbrdfnav_navigator.so (plugin_api.h), against
+// the C++ navigator linked into this test: the same neighbours, the ABI's statuses and messages;
+// its neighbours' materials make closures of libbrdfnav.so.
+#include "navigator/navigator_fixture.h"
+#include "plugin/plugin_api.h"
 
-#include <brdfnav/navigator.h>
+#include <brdfnav/navigator/navigator.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -14,35 +15,37 @@ namespace brdfnav {
 namespace {
 
 using test::api;
+using test::navigator_api;
 using ::testing::HasSubstr;
 
 struct NavigatorHandle {
   brdfnav_navigator* navigator = nullptr;
-  ~NavigatorHandle() { api().navigator_close(navigator); }
+  ~NavigatorHandle() { navigator_api().navigator_close(navigator); }
 };
 struct ListHandle {
   brdfnav_neighbors* list = nullptr;
-  ~ListHandle() { api().neighbors_free(list); }
+  ~ListHandle() { navigator_api().neighbors_free(list); }
 };
 
 class CAbiNavigator : public ::testing::Test {
  protected:
   void SetUp() override {
     ASSERT_NO_THROW(api());
-    ASSERT_EQ(c.navigator_open(db().c_str(), &nav.navigator), BRDFNAV_OK) << c.geterror();
+    ASSERT_NO_THROW(navigator_api());
+    ASSERT_EQ(c.navigator_open(db().c_str(), &nav.navigator), BRDFNAV_OK) << c.navigator_geterror();
   }
   static const std::filesystem::path& db() { return test::NavigationDatabase::get().dir(); }
   static const Navigator& reference() {
     static const Navigator n = Navigator::open(db());
     return n;
   }
-  const test::Api& c = api();
+  const test::NavigatorApi& c = navigator_api();
   NavigatorHandle nav;
 };
 
 // Every neighbour of a C list equals the C++ navigator's.
 void expect_list(const brdfnav_neighbors* list, const std::vector<Neighbor>& expected) {
-  const test::Api& c = api();
+  const test::NavigatorApi& c = navigator_api();
   size_t count = 0;
   ASSERT_EQ(c.neighbors_count(list, &count), BRDFNAV_OK);
   ASSERT_EQ(count, expected.size());
@@ -69,8 +72,8 @@ void expect_list(const brdfnav_neighbors* list, const std::vector<Neighbor>& exp
     EXPECT_EQ(n.material.colorspace, e.material.colorspace);
     // The neighbour is a material the ABI takes back.
     brdfnav_closure* closure = nullptr;
-    EXPECT_EQ(c.closure_create(&n.material, &closure), BRDFNAV_OK) << c.geterror();
-    c.closure_destroy(closure);
+    EXPECT_EQ(api().closure_create(&n.material, &closure), BRDFNAV_OK) << api().geterror();
+    api().closure_destroy(closure);
   }
 }
 
@@ -86,16 +89,17 @@ TEST_F(CAbiNavigator, ListsTheCppNeighboursOfEveryTab) {
     ASSERT_EQ(c.navigator_neighbors(nav.navigator, &current, 0.02, static_cast<brdfnav_tab>(tab), 5,
                                     &from_struct.list),
               BRDFNAV_OK)
-        << c.geterror();
+        << c.navigator_geterror();
     expect_list(from_struct.list, expected);
     ASSERT_EQ(c.navigator_neighbors_load(nav.navigator, spec, 0.02, static_cast<brdfnav_tab>(tab),
                                          5, &from_spec.list),
               BRDFNAV_OK)
-        << c.geterror();
+        << c.navigator_geterror();
     expect_list(from_spec.list, expected);
   }
   ListHandle gallery;
-  ASSERT_EQ(c.navigator_gallery(nav.navigator, 6, &gallery.list), BRDFNAV_OK) << c.geterror();
+  ASSERT_EQ(c.navigator_gallery(nav.navigator, 6, &gallery.list), BRDFNAV_OK)
+      << c.navigator_geterror();
   expect_list(gallery.list, reference().gallery(6));
 }
 
@@ -118,7 +122,7 @@ TEST_F(CAbiNavigator, ReportsBadQueriesWithStatusAndMessage) {
   const auto expect_failure = [&](brdfnav_status status, brdfnav_status expected,
                                   const std::string& message) {
     EXPECT_EQ(status, expected) << message;
-    EXPECT_THAT(c.geterror(), HasSubstr(message));
+    EXPECT_THAT(c.navigator_geterror(), HasSubstr(message));
   };
   brdfnav_navigator* none = reinterpret_cast<brdfnav_navigator*>(&none);
   expect_failure(c.navigator_open("/nonexistent/db", &none), BRDFNAV_ERROR_DATABASE,

@@ -1,7 +1,7 @@
-#include <brdfnav/thumbnails.h>
+#include <brdfnav/navigator/thumbnails.h>
 
 #include <brdfnav/core/cube_root.h>
-#include <brdfnav/precompute/parallel_for.h>
+#include <brdfnav/core/parallel_for.h>
 
 #include <OpenImageIO/imagebufalgo.h>
 

@@ -1,4 +1,4 @@
-#include "database_format.h"
+#include <brdfnav/navigator/database_format.h>
 
 #include <brdfnav/core/atomic_file.h>
 
@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <tuple>
 
 namespace brdfnav::db {
 
@@ -24,21 +25,29 @@ std::string model_name(ModelId id) {
   return std::string(model_info(id).name);
 }
 
-void emit_settings(YAML::Emitter& out, const Profile& p, const EnvMap& env, const Scene& scene) {
+struct EmitValue {
+  YAML::Emitter& out;
+  template <typename T>
+  void operator()(T v) const {
+    out << v;
+  }
+};
+
+void emit_settings(YAML::Emitter& out, const BuildSettings& s) {
   out << YAML::Key << "brdfnav_database" << YAML::Value << kDatabaseFormatVersion;
-  out << YAML::Key << "generator" << YAML::Value << "brdfnav " BRDFNAV_VERSION;
-  out << YAML::Key << "renderer_revision" << YAML::Value << kRendererRevision;
-  out << YAML::Key << "profile" << YAML::Value << p.name;
-  out << YAML::Key << "resolution" << YAML::Value << p.resolution;
-  out << YAML::Key << "scene" << YAML::Value << scene.description();
+  out << YAML::Key << "generator" << YAML::Value << s.generator;
+  out << YAML::Key << "renderer_revision" << YAML::Value << s.renderer_revision;
+  out << YAML::Key << "profile" << YAML::Value << s.profile;
+  out << YAML::Key << "resolution" << YAML::Value << s.resolution;
+  out << YAML::Key << "scene" << YAML::Value << s.scene;
   out << YAML::Key << "environment" << YAML::Value << YAML::BeginMap;
-  out << YAML::Key << "path" << YAML::Value << env.source();
-  out << YAML::Key << "pixel_sha1" << YAML::Value << env.pixel_hash();
-  out << YAML::Key << "width" << YAML::Value << env.width();
-  out << YAML::Key << "height" << YAML::Value << env.height() << YAML::EndMap;
-  out << YAML::Key << "q_nodes" << YAML::Value << YAML::Flow << diffuse_fraction_nodes(p.q_nodes);
+  out << YAML::Key << "path" << YAML::Value << s.env_path;
+  out << YAML::Key << "pixel_sha1" << YAML::Value << s.env_pixel_sha1;
+  out << YAML::Key << "width" << YAML::Value << s.env_width;
+  out << YAML::Key << "height" << YAML::Value << s.env_height << YAML::EndMap;
+  out << YAML::Key << "q_nodes" << YAML::Value << YAML::Flow << s.q_nodes;
   out << YAML::Key << "models" << YAML::Value << YAML::BeginMap;
-  for (const ProfileGrid& g : p.grids) {
+  for (const ProfileGrid& g : s.grids) {
     out << YAML::Key << model_name(g.model) << YAML::Value << YAML::BeginMap;
     for (std::size_t d = 0; d < g.grid.dimensions(); ++d)
       out << YAML::Key << std::string(g.grid.specs()[d].name) << YAML::Value << YAML::Flow
@@ -46,24 +55,14 @@ void emit_settings(YAML::Emitter& out, const Profile& p, const EnvMap& env, cons
     out << YAML::EndMap;
   }
   out << YAML::EndMap;
-  const RenderQuality& q = p.quality;
-  out << YAML::Key << "render_quality" << YAML::Value << YAML::Flow << YAML::BeginMap;
-  out << YAML::Key << "texels_per_width" << YAML::Value << q.texels_per_width;
-  out << YAML::Key << "hot_texels_per_width" << YAML::Value << q.hot_texels_per_width;
-  out << YAML::Key << "max_node" << YAML::Value << q.max_node;
-  out << YAML::Key << "reach" << YAML::Value << q.reach;
-  out << YAML::Key << "max_split" << YAML::Value << q.max_split;
-  out << YAML::Key << "max_nodes" << YAML::Value << q.max_nodes << YAML::EndMap;
-  out << YAML::Key << "pca" << YAML::Value << YAML::Flow << YAML::BeginMap;
-  out << YAML::Key << "components" << YAML::Value << p.pca.components;
-  out << YAML::Key << "oversample" << YAML::Value << p.pca.oversample;
-  out << YAML::Key << "power_iterations" << YAML::Value << p.pca.power_iterations;
-  out << YAML::Key << "seed" << YAML::Value << p.pca.seed << YAML::EndMap;
-  out << YAML::Key << "fit" << YAML::Value << YAML::Flow << YAML::BeginMap;
-  out << YAML::Key << "n_wo" << YAML::Value << p.fit.n_wo;
-  out << YAML::Key << "n_wi" << YAML::Value << p.fit.n_wi;
-  out << YAML::Key << "starts" << YAML::Value << p.fit.starts;
-  out << YAML::Key << "max_iterations" << YAML::Value << p.fit.max_iterations << YAML::EndMap;
+  for (const SettingsGroup& group : s.options) {
+    out << YAML::Key << group.name << YAML::Value << YAML::Flow << YAML::BeginMap;
+    for (const auto& [key, value] : group.values) {
+      out << YAML::Key << key << YAML::Value;
+      std::visit(EmitValue{out}, value);
+    }
+    out << YAML::EndMap;
+  }
 }
 
 YAML::Emitter& begin(YAML::Emitter& out) {
@@ -87,14 +86,14 @@ YAML::Node load_yaml(const std::string& file) {
 }
 }  // namespace
 
+namespace {
+
 // A required key of a manifest map, or a DatabaseError naming the file and the key.
 YAML::Node require(const YAML::Node& map, const std::string& key, const std::string& file) {
   const YAML::Node node = map[key];
   if (!node) throw DatabaseError(file + ": missing key '" + key + "'");
   return node;
 }
-
-namespace {
 
 // The models' grids. Every node has an image the manifest lists, so a grid with more nodes than
 // `listed` files is refused before anything sized by it is made (a few hundred numbers in a
@@ -167,16 +166,26 @@ void write_table(const std::filesystem::path& path, const Table& table) {
   write_file_atomic(path, bytes);
 }
 
+namespace {
+// The magic and the shape of a table whose stream is at its start.
+std::pair<std::uint32_t, std::uint32_t> read_header(std::istream& in,
+                                                    const std::filesystem::path& path) {
+  char magic[8];
+  std::uint32_t rows = 0, cols = 0;
+  in.read(magic, 8);
+  in.read(reinterpret_cast<char*>(&rows), 4);
+  in.read(reinterpret_cast<char*>(&cols), 4);
+  if (!in || std::memcmp(magic, kTableMagic, 8) != 0)
+    throw DatabaseError(path.string() + ": not a brdfnav table (bad header)");
+  return {rows, cols};
+}
+}  // namespace
+
 Table read_table(const std::filesystem::path& path, std::uint32_t rows, std::uint32_t cols) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw DatabaseError(path.string() + ": cannot open");
-  char magic[8];
   Table t;
-  in.read(magic, 8);
-  in.read(reinterpret_cast<char*>(&t.rows), 4);
-  in.read(reinterpret_cast<char*>(&t.cols), 4);
-  if (!in || std::memcmp(magic, kTableMagic, 8) != 0)
-    throw DatabaseError(path.string() + ": not a brdfnav table (bad header)");
+  std::tie(t.rows, t.cols) = read_header(in, path);
   if (t.rows != rows || t.cols != cols)
     throw DatabaseError(path.string() + ": table is " + std::to_string(t.rows) + " x " +
                         std::to_string(t.cols) + ", the manifest implies " + std::to_string(rows) +
@@ -188,22 +197,49 @@ Table read_table(const std::filesystem::path& path, std::uint32_t rows, std::uin
   return t;
 }
 
-std::string settings_yaml(const Profile& profile, const EnvMap& env, const Scene& scene) {
+std::pair<std::uint32_t, std::uint32_t> read_table_shape(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw DatabaseError(path.string() + ": cannot open");
+  return read_header(in, path);
+}
+
+ModelEmbedding read_model_embedding(const std::filesystem::path& dir,
+                                    const std::vector<double>& q_nodes, int components,
+                                    const ProfileGrid& g) {
+  const auto cols = std::uint32_t(q_nodes.size() * g.grid.node_count() * 3);
+  const Table t = read_table(dir / coefficients_file(g.model), std::uint32_t(components), cols);
+  Eigen::MatrixXf c(t.rows, t.cols);
+  for (std::uint32_t i = 0; i < t.rows; ++i)
+    for (std::uint32_t j = 0; j < t.cols; ++j) c(i, j) = t.at(i, j);
+  return ModelEmbedding(g.model, g.grid, q_nodes, std::move(c));
+}
+
+std::string settings_yaml(const BuildSettings& settings) {
   YAML::Emitter out;
-  emit_settings(begin(out), profile, env, scene);
+  emit_settings(begin(out), settings);
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";
 }
 
-std::string manifest_yaml(const Profile& profile, const EnvMap& env, const Scene& scene,
-                          int components, const std::map<std::string, std::string>& files) {
+std::string manifest_yaml(const BuildSettings& settings, int components, const FileSums& files) {
   YAML::Emitter out;
-  emit_settings(begin(out), profile, env, scene);
+  emit_settings(begin(out), settings);
   out << YAML::Key << "components" << YAML::Value << components;
   out << YAML::Key << "files" << YAML::Value << YAML::BeginMap;
   for (const auto& [name, sha] : files) out << YAML::Key << name << YAML::Value << sha;
   out << YAML::EndMap << YAML::EndMap;
   return std::string(out.c_str()) + "\n";
+}
+
+// The settings' text, then the shard's own keys: a merge checks that every shard's file starts
+// with the same settings.
+std::string shard_yaml(const BuildSettings& settings, int shard_index, int shard_count,
+                       const FileSums& files) {
+  std::string text = settings_yaml(settings);
+  text +=
+      "shard: " + std::to_string(shard_index) + "/" + std::to_string(shard_count) + "\nfiles:\n";
+  for (const auto& [name, sha] : files) text += "  " + name + ": " + sha + "\n";
+  return text;
 }
 
 Manifest read_manifest(const std::filesystem::path& path) {
@@ -252,8 +288,9 @@ ShardOrigin read_shard_origin(const std::filesystem::path& shard) {
     ShardOrigin o;
     o.profile = db::require(root, "profile", file).as<std::string>();
     o.resolution = db::require(root, "resolution", file).as<int>();
-    o.env_path =
-        db::require(db::require(root, "environment", file), "path", file).as<std::string>();
+    const YAML::Node env = db::require(root, "environment", file);
+    o.env_path = db::require(env, "path", file).as<std::string>();
+    o.env_hash = db::require(env, "pixel_sha1", file).as<std::string>();
     o.scene = db::require(root, "scene", file).as<std::string>();
     const std::string shard_text = db::require(root, "shard", file).as<std::string>();
     if (std::sscanf(shard_text.c_str(), "%d/%d", &o.shard_index, &o.shard_count) != 2 ||

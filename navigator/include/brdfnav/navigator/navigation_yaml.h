@@ -3,7 +3,7 @@
 // of material_yaml.h; an export reads back as a material wherever a material file is accepted.
 #pragma once
 
-#include <brdfnav/navigator.h>
+#include <brdfnav/navigator/navigator.h>
 
 #include <filesystem>
 #include <string>

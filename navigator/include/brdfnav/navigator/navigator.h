@@ -8,7 +8,7 @@
 #pragma once
 
 #include <brdfnav/core/material.h>
-#include <brdfnav/precompute/database.h>
+#include <brdfnav/navigator/database.h>
 
 #include <Eigen/Core>
 

@@ -2,7 +2,7 @@
 // the embedded distance eps inside the valid range of the colour.
 #pragma once
 
-#include "navigator/walk.h"
+#include "walk.h"
 
 #include <brdfnav/core/math.h>
 

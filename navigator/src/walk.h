@@ -4,7 +4,7 @@
 
 #include <brdfnav/core/grid.h>
 #include <brdfnav/core/material.h>
-#include <brdfnav/precompute/embedding.h>
+#include <brdfnav/navigator/embedding.h>
 
 #include <Eigen/Core>
 

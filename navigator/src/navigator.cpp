@@ -1,8 +1,8 @@
-#include <brdfnav/navigator.h>
+#include <brdfnav/navigator/navigator.h>
 
-#include "navigator/colour.h"
-#include "navigator/kmeans.h"
-#include "navigator/walk.h"
+#include "colour.h"
+#include "kmeans.h"
+#include "walk.h"
 
 #include <algorithm>
 #include <cmath>
@@ -125,7 +125,7 @@ Eigen::VectorXf Navigator::embed(const Material& m) const {
 }
 
 double Navigator::distance(const Material& a, const Material& b) const {
-  return Embedding::distance(embed(a), embed(b));
+  return embedding_distance(embed(a), embed(b));
 }
 
 Material Navigator::convert(const Material& m, ModelId to) const {
@@ -224,9 +224,9 @@ std::vector<Neighbor> Navigator::models_tab(const Material& current, double radi
       const nav::Hit hit = nav::walk_to_sphere(embedding, centre, radius, path);
       Eigen::VectorXf x = embedding.embed(hit.material);
       const Eigen::VectorXf back = embed(convert(hit.material, current.model));
-      if (Embedding::distance(x, back) < options_.delta_factor * radius) continue;
+      if (embedding_distance(x, back) < options_.delta_factor * radius) continue;
       candidates.push_back(
-          neighbor_of(Tab::models, model_name(g.model), hit, Embedding::distance(x, from)));
+          neighbor_of(Tab::models, model_name(g.model), hit, embedding_distance(x, from)));
       points.push_back(std::move(x));
     }
   }

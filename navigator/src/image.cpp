@@ -1,4 +1,4 @@
-#include <brdfnav/precompute/image.h>
+#include <brdfnav/navigator/image.h>
 
 #include <brdfnav/core/atomic_file.h>
 

@@ -8,8 +8,8 @@
 #pragma once
 
 #include <brdfnav/core/material.h>
-#include <brdfnav/precompute/database.h>
-#include <brdfnav/precompute/image.h>
+#include <brdfnav/navigator/database.h>
+#include <brdfnav/navigator/image.h>
 
 #include <cstddef>
 #include <list>

@@ -1,4 +1,4 @@
-#include "navigator/walk.h"
+#include "walk.h"
 
 #include <algorithm>
 #include <limits>
@@ -85,7 +85,7 @@ Hit walk_to_sphere(const ModelEmbedding& embedding, const Eigen::VectorXf& centr
   // distance itself: distance - radius + radius would lose it to rounding when the radius is far
   // larger.
   const auto distance = [&](double s) {
-    return Embedding::distance(embedding.embed(path.material(s)), centre);
+    return embedding_distance(embedding.embed(path.material(s)), centre);
   };
   double lo = 0, f_lo = -radius;  // the walk starts at the centre
   for (std::size_t i = 1; i < path.breaks.size(); ++i) {

@@ -5,10 +5,10 @@
 // nodes) and on the renderer's accuracy; BRDFNAV_TEST_DATABASE=DIR measures another database
 // than the test profile's. The models tab is at eps from the current material's best fit, not
 // from the material (docs/NAVIGATION.md), and the gallery at no set distance.
-#include "navigator_fixture.h"
+#include "navigator/navigator_fixture.h"
 
 #include <brdfnav/core/statistics.h>
-#include <brdfnav/navigator.h>
+#include <brdfnav/navigator/navigator.h>
 #include <brdfnav/precompute/render.h>
 #include <gtest/gtest.h>
 

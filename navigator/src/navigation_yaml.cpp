@@ -1,4 +1,4 @@
-#include <brdfnav/io/navigation_yaml.h>
+#include <brdfnav/navigator/navigation_yaml.h>
 
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/io/material_yaml.h>

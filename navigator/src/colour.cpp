@@ -1,4 +1,4 @@
-#include "navigator/colour.h"
+#include "colour.h"
 
 #include <brdfnav/core/cielab.h>
 

@@ -1,6 +1,6 @@
-#include "navigator/kmeans.h"
+#include "kmeans.h"
 
-#include <brdfnav/precompute/parallel_for.h>
+#include <brdfnav/core/parallel_for.h>
 
 #include <algorithm>
 #include <limits>

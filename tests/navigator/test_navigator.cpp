@@ -2,17 +2,17 @@
 // are where the paper puts them (checked through the embedding, independently of the walk), the
 // clustering is deterministic, concurrent queries agree with serial ones, and the YAML documents
 // read back.
-#include "navigator_fixture.h"
+#include "navigator/navigator_fixture.h"
 
 #include <brdfnav/core/cielab.h>
 #include <brdfnav/io/material_yaml.h>
-#include <brdfnav/io/navigation_yaml.h>
-#include <brdfnav/navigator.h>
+#include <brdfnav/navigator/navigation_yaml.h>
+#include <brdfnav/navigator/navigator.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
-#include "navigator/colour.h"
+#include "colour.h"
 
 #include <cmath>
 #include <set>

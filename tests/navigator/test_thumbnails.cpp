@@ -1,11 +1,11 @@
 // Thumbnails of any material from a test-profile database: exact at grid nodes, close to the
 // exactly rendered image between them, resampled to any size, thread-safe, and through OCIO.
-#include "navigator_fixture.h"
+#include "navigator/navigator_fixture.h"
 
-#include <brdfnav/navigator.h>
+#include <brdfnav/navigator/navigator.h>
+#include <brdfnav/navigator/thumbnails.h>
 #include <brdfnav/ocio/color_pipeline.h>
 #include <brdfnav/precompute/render.h>
-#include <brdfnav/thumbnails.h>
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,0 +1,100 @@
+/* brdfnav navigator C ABI: opens a database made by `brdfnav precompute` and offers a
+ * material's variations at equal visual distance (docs/NAVIGATION.md), for lookdev tools. It is
+ * libbrdfnav_navigator.so, apart from the closures of libbrdfnav.so (brdfnav.h) that a renderer
+ * loads: it reads images through OpenImageIO, which a renderer need not take into its process.
+ *
+ * Conventions are brdfnav.h's, with these of its own:
+ * - Hosts that load the library at run time call brdfnav_navigator_abi_version() first and use
+ *   nothing else unless it equals the BRDFNAV_NAVIGATOR_ABI_VERSION they were compiled with.
+ * - The message of a failed call is brdfnav_navigator_geterror()'s (not brdfnav_geterror()'s:
+ *   each library keeps its own per-thread message).
+ * - The materials are brdfnav.h's brdfnav_material; a neighbour's material can be passed to
+ *   brdfnav_closure_create() of libbrdfnav.so. This library does not need libbrdfnav.so.
+ */
+#ifndef BRDFNAV_BRDFNAV_NAVIGATOR_H
+#define BRDFNAV_BRDFNAV_NAVIGATOR_H
+
+#include <brdfnav/brdfnav.h>
+
+#include <stddef.h>
+
+/* 1: the navigator of brdfnav.h's ABI 2, in a library of its own, with its own version and
+ * error message. */
+#define BRDFNAV_NAVIGATOR_ABI_VERSION 1
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+BRDFNAV_API int brdfnav_navigator_abi_version(void);
+
+/* The last failure's message of this library's functions on the calling thread ("" if none).
+ * Valid until the next failing call on this thread. Successful calls do not clear it. */
+BRDFNAV_API const char* brdfnav_navigator_geterror(void);
+
+/* A navigator opens a database made by `brdfnav precompute`
+ * once; each query returns a list of neighbours of a material at embedded distance `radius`
+ * (the cube-root RMS metric) in one tab of the interface. A navigator may be queried from any
+ * number of threads at once; a list is immutable. Strings and arrays a list hands out live
+ * until brdfnav_neighbors_free(). */
+typedef enum brdfnav_tab {
+  BRDFNAV_TAB_LOBE = 0,     /* each non-linear parameter up and down: labels "alpha_x+", ... */
+  BRDFNAV_TAB_DIFFUSE = 1,  /* rho_d along CIELAB: "L+", "L-", "ab+0", "ab+45", ... "ab+315" */
+  BRDFNAV_TAB_SPECULAR = 2, /* rho_s, the same directions */
+  BRDFNAV_TAB_MODELS = 3,   /* other models' neighbours, one per cluster: label = model name */
+  BRDFNAV_TAB_GALLERY = 4   /* the most different materials of the database */
+} brdfnav_tab;
+
+/* brdfnav_neighbor.flags */
+#define BRDFNAV_NEIGHBOR_AT_BOUNDARY 1u /* a parameter reached its range's end before radius */
+#define BRDFNAV_NEIGHBOR_CLAMPED 2u     /* the colour reached its valid range's end before radius */
+
+typedef struct brdfnav_neighbor {
+  brdfnav_tab tab;
+  const char* label;
+  double distance;           /* embedded distance from the current material */
+  unsigned flags;            /* BRDFNAV_NEIGHBOR_* bits */
+  brdfnav_material material; /* every parameter given; pointers into the list */
+} brdfnav_neighbor;
+
+typedef struct brdfnav_navigator brdfnav_navigator; /* opaque */
+typedef struct brdfnav_neighbors brdfnav_neighbors; /* opaque: a list of neighbours */
+
+/* Opens and verifies a database directory (BRDFNAV_ERROR_DATABASE naming the file when it is
+ * missing or damaged). Sets *out to NULL on failure. */
+BRDFNAV_API brdfnav_status brdfnav_navigator_open(const char* database_dir,
+                                                  brdfnav_navigator** out);
+/* Accepts NULL. Every list it returned stays valid. */
+BRDFNAV_API void brdfnav_navigator_close(brdfnav_navigator* navigator);
+
+/* The neighbours of `current` in `tab` at distance `radius` (finite, >= 1e-4: kMinRadius).
+ * `clusters` (>= 1) is the most neighbours the models and gallery tabs return (8 in the paper). A
+ * model the database does not hold, a material in a colour space other than lin_rec709 (the
+ * database's) and a bad radius or cluster count are BRDFNAV_ERROR_INVALID_ARGUMENT. Sets *out to
+ * NULL on failure. */
+BRDFNAV_API brdfnav_status brdfnav_navigator_neighbors(const brdfnav_navigator* navigator,
+                                                       const brdfnav_material* current,
+                                                       double radius, brdfnav_tab tab, int clusters,
+                                                       brdfnav_neighbors** out);
+/* The same with the material as a YAML file or inline spec (as brdfnav_closure_load()). */
+BRDFNAV_API brdfnav_status brdfnav_navigator_neighbors_load(const brdfnav_navigator* navigator,
+                                                            const char* path_or_spec, double radius,
+                                                            brdfnav_tab tab, int clusters,
+                                                            brdfnav_neighbors** out);
+/* The start gallery: `count` (>= 1) maximally different materials; distances are from the
+ * gallery's matte grey reference. Sets *out to NULL on failure. */
+BRDFNAV_API brdfnav_status brdfnav_navigator_gallery(const brdfnav_navigator* navigator, int count,
+                                                     brdfnav_neighbors** out);
+
+BRDFNAV_API brdfnav_status brdfnav_neighbors_count(const brdfnav_neighbors* list, size_t* count);
+/* Neighbour `index` (0 .. count - 1); out->material can be passed to brdfnav_closure_create(). */
+BRDFNAV_API brdfnav_status brdfnav_neighbors_get(const brdfnav_neighbors* list, size_t index,
+                                                 brdfnav_neighbor* out);
+/* Accepts NULL. */
+BRDFNAV_API void brdfnav_neighbors_free(brdfnav_neighbors* list);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* BRDFNAV_BRDFNAV_NAVIGATOR_H */

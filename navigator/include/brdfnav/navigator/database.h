@@ -1,0 +1,97 @@
+// The precomputed database, read side (format in docs/DATABASE.md): the pre-rendered images, the
+// unified embedding and the model-to-model conversion tables, with a manifest that records how
+// they were made and a SHA-1 of every file. Database::open() verifies one and loads what
+// navigation needs; nothing here renders or builds (the builder, brdfnav/precompute/database.h,
+// writes databases through database_format.h beside this file).
+#pragma once
+
+#include <brdfnav/core/grid.h>
+#include <brdfnav/core/models.h>
+#include <brdfnav/navigator/embedding.h>
+
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace brdfnav {
+
+inline constexpr int kDatabaseFormatVersion = 1;
+
+// A database that cannot be built or used; the message names the file.
+class DatabaseError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// One model's grid in a database (and in a profile, which the builder makes them from).
+struct ProfileGrid {
+  ModelId model;
+  ParamGrid grid;
+};
+
+// Best fit of one grid node of model `from` by model `to` (fit_lobe), and how far apart the two
+// are in the image metric (through the embedding; both with rho_d = 0).
+struct Conversion {
+  std::vector<double> params;  // of `to`, in model_info(to).params order
+  Rgb scale;                   // rho_s of the fit for rho_s = 1 of the source
+  double relative_error;       // BRDF-space, from fit_lobe
+  double image_distance;       // embedded metric between the node material and its fit
+};
+
+struct ConversionTable {
+  ModelId from, to;
+  std::vector<Conversion> nodes;  // one per node of from's grid
+};
+
+// What the manifest says (everything but the build settings, which are only recorded).
+struct Manifest {
+  int format_version = kDatabaseFormatVersion;
+  std::string profile;
+  int resolution = 0;
+  std::string scene;
+  std::string env_path, env_hash;
+  int components = 0;  // embedding coefficients per channel
+  std::vector<double> q_nodes;
+  std::vector<ProfileGrid> grids;
+  std::map<std::string, std::string> files;  // path relative to the database -> SHA-1 (hex)
+};
+
+// SHA-1 of a file's bytes in hex, as the manifest records it. Throws DatabaseError naming the file.
+std::string file_sha1(const std::filesystem::path& path);
+
+// Where a shard was made: enough to rebuild its profile, environment and scene for the merge.
+struct ShardOrigin {
+  std::string profile;
+  int resolution = 0;
+  std::string env_path, env_hash, scene;
+  int shard_index = 0, shard_count = 1;
+  std::map<std::string, std::string> files;  // the shard's images -> SHA-1
+};
+// Reads SHARD/shard.yaml. Throws DatabaseError naming the file.
+ShardOrigin read_shard_origin(const std::filesystem::path& shard);
+
+class Database {
+ public:
+  // Checks the format version, every file's SHA-1, that every expected file is listed and that
+  // the files belong together (image sizes and provenance, table shapes). Loads the embedding
+  // and the conversion tables, not the images. Throws DatabaseError naming the file.
+  static Database open(const std::filesystem::path& dir);
+
+  const std::filesystem::path& dir() const { return dir_; }
+  const Manifest& manifest() const { return manifest_; }
+  // nullptr when the database does not hold the model.
+  const ModelEmbedding* embedding(ModelId id) const;
+  const ConversionTable* conversion(ModelId from, ModelId to) const;
+  std::filesystem::path image_path(ModelId id, std::size_t node) const;
+  std::filesystem::path diffuse_path() const;
+
+ private:
+  std::filesystem::path dir_;
+  Manifest manifest_;
+  std::vector<ModelEmbedding> embeddings_;
+  std::vector<ConversionTable> conversions_;
+};
+
+}  // namespace brdfnav

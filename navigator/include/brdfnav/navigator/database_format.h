@@ -1,0 +1,91 @@
+// The on-disk layout of a database, the one definition its reader (database.cpp) and its writer
+// (the builder's precompute_job.cpp) share: file names, the float32 table format and the YAML of
+// the manifest, of an unfinished build's settings and of a shard.
+#pragma once
+
+#include <brdfnav/navigator/database.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace brdfnav::db {
+
+inline constexpr const char* kManifestFile = "manifest.yaml";
+// The settings of an unfinished build, in its work directory: a resumed build must match them.
+inline constexpr const char* kSettingsFile = "settings.yaml";
+// A shard's manifest: the settings, `shard: i/N` and the checksums of its images.
+inline constexpr const char* kShardFile = "shard.yaml";
+inline constexpr const char* kDiffuseFile = "diffuse.exr";
+inline constexpr const char* kBasisFile = "embedding/basis.f32";
+inline constexpr const char* kSingularValuesFile = "embedding/singular_values.f32";
+
+std::string image_file(ModelId id, std::size_t node);
+std::string coefficients_file(ModelId id);
+std::string conversion_file(ModelId from, ModelId to);
+// Every file of a database with these grids except the manifest, sorted.
+std::vector<std::string> database_files(const std::vector<ProfileGrid>& grids);
+// The models of a conversion table's columns: `to`'s parameters, scale RGB, relative error,
+// image distance.
+std::size_t conversion_columns(ModelId to);
+
+// A row-major float32 matrix (see docs/DATABASE.md for the file layout).
+struct Table {
+  std::uint32_t rows = 0, cols = 0;
+  std::vector<float> values;
+  float at(std::size_t r, std::size_t c) const { return values[r * cols + c]; }
+};
+void write_table(const std::filesystem::path& path, const Table& table);
+// Throws DatabaseError naming the file when it is unreadable, malformed or not rows x cols.
+Table read_table(const std::filesystem::path& path, std::uint32_t rows, std::uint32_t cols);
+// The rows and columns a table's header declares (a table's values unread). Throws DatabaseError
+// naming the file when it is unreadable or not a table.
+std::pair<std::uint32_t, std::uint32_t> read_table_shape(const std::filesystem::path& path);
+
+// One model's embedding coefficients (`components` x q nodes x grid nodes x 3), from the
+// database or work directory `dir`. Throws DatabaseError naming the file.
+ModelEmbedding read_model_embedding(const std::filesystem::path& dir,
+                                    const std::vector<double>& q_nodes, int components,
+                                    const ProfileGrid& grid);
+
+// One value of the builder's options as the builder holds it: written as an integer or a double.
+using SettingValue = std::variant<std::int64_t, std::uint64_t, double>;
+// A flow map of the manifest (render_quality, pca, fit), its keys in the order written.
+struct SettingsGroup {
+  std::string name;
+  std::vector<std::pair<std::string, SettingValue>> values;
+};
+
+// How a build was made, as plain values: everything the manifest holds but `components` and
+// the checksums. The builder fills it from its profile, map and scene (build_settings()).
+struct BuildSettings {
+  std::string generator;  // "brdfnav VERSION"
+  int renderer_revision = 0;
+  std::string profile;
+  int resolution = 0;
+  std::string scene;  // the scene's description
+  std::string env_path, env_pixel_sha1;
+  int env_width = 0, env_height = 0;
+  std::vector<double> q_nodes;
+  std::vector<ProfileGrid> grids;
+  std::vector<SettingsGroup> options;
+};
+
+using FileSums = std::map<std::string, std::string>;  // relative path -> SHA-1 (hex)
+
+// What a build is asked to make: an unfinished build's settings.yaml, which a resumed build and
+// every shard of one build must match byte for byte.
+std::string settings_yaml(const BuildSettings& settings);
+// The complete manifest.
+std::string manifest_yaml(const BuildSettings& settings, int components, const FileSums& files);
+// A shard's shard.yaml: the settings, `shard: i/N` and its images' checksums.
+std::string shard_yaml(const BuildSettings& settings, int shard_index, int shard_count,
+                       const FileSums& files);
+// Throws DatabaseError naming the file and the key.
+Manifest read_manifest(const std::filesystem::path& path);
+
+}  // namespace brdfnav::db
