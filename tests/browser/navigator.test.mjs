@@ -528,6 +528,13 @@ test('bad API requests get 400 naming the field, and the server keeps serving', 
   const png = await fetch(new URL('/api/thumbnail', url), { method: 'POST', body: body({ material: m }) });
   assert.equal(png.headers.get('content-type'), 'image/png');
   assert.equal(Buffer.from(await png.arrayBuffer()).subarray(1, 4).toString(), 'PNG');
+  // The server's log names each failure in words, whatever encoding the client accepted (fetch
+  // accepts gzip: the log once showed the compressed bytes).
+  const logged = await fetch(new URL('/api/neighbors', url), { method: 'POST',
+    headers: { 'Accept-Encoding': 'gzip, br' }, body: body({ material: m, radius: 0.02, tab: 'nope' }) });
+  assert.equal(logged.status, 400);
+  const serveLog = fs.readFileSync(path.join(artefacts, 'serve.log'), 'utf8');
+  assert.match(serveLog, /brdfnav: serve: POST \/api\/neighbors -> 400 \{"error":\s*"tab: unknown tab/);
 });
 
 // Raw sockets on the server's port, each with promises of its connection and first answer;

@@ -43,12 +43,16 @@ struct EnvLoadOptions {
   bool sanitize = false;
 };
 
+// Negative texel components within this fraction of the map's mean are the ringing of filtered
+// or compressed maps (Blender's reach -0.4%): clamped to 0 without a warning.
+inline constexpr double kNegligibleNegative = 0.01;
+
 class EnvMap {
  public:
   // Reads the first three channels of subimage 0 as linear RGB. Throws EnvMapError when the file
   // is missing or unreadable, has fewer than 3 channels, is not exactly 2:1, is wider than
   // kMaxEnvWidth, or (without `sanitize`) holds NaN/Inf texels. Negative components are clamped
-  // to 0 with one warning.
+  // to 0, with one warning when one of them is below -kNegligibleNegative times the mean.
   static EnvMap load(const std::filesystem::path& path, const EnvLoadOptions& options = {},
                      const WarningSink& warn = warn_to_stderr);
 
