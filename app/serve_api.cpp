@@ -177,11 +177,11 @@ json neighbor_json(const Neighbor& n) {
   json flags = json::array();
   if (n.at_boundary) flags.push_back("at_boundary");
   if (n.clamped) flags.push_back("clamped");
-  return {{"tab", tab_name(n.tab)},
-          {"label", n.label},
-          {"distance", n.distance},
-          {"flags", flags},
-          {"material", material_json(n.material)}};
+  if (n.beyond_radius) flags.push_back("beyond_radius");
+  return {{"tab", tab_name(n.tab)}, {"label", n.label},
+          {"words", n.words},       {"change", n.change},
+          {"opposite", n.opposite}, {"distance", n.distance},
+          {"flags", flags},         {"material", material_json(n.material)}};
 }
 
 json model_json(const ModelInfo& info, const ParamGrid& grid) {

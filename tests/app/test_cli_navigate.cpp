@@ -54,7 +54,8 @@ TEST_F(CliNavigate, NeighborsPrintsOneYamlListWithTheStableKeys) {
   for (const YAML::Node& item : list) {
     std::set<std::string> keys;
     for (const auto& kv : item) keys.insert(kv.first.as<std::string>());
-    EXPECT_EQ(keys, (std::set<std::string>{"tab", "label", "distance", "flags", "material"}));
+    EXPECT_EQ(keys, (std::set<std::string>{"tab", "label", "words", "change", "opposite",
+                                           "distance", "flags", "material"}));
     tabs.insert(item["tab"].as<std::string>());
     EXPECT_GT(item["distance"].as<double>(), 0);
     EXPECT_TRUE(item["flags"].IsSequence());
