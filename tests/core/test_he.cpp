@@ -379,8 +379,8 @@ TEST(He, TabulatedShadowingAndRoughnessMatchTheExactForms) {
 // Why eval() sums the series at every g: its rough-surface limit exp(-t/g) / g is only first
 // order. With c = t / g the series is the limit times 1 + (c^2 - 4 c + 2) / (2 g) + O(1/g^2)
 // (the second Laguerre polynomial of c, over g; the 1/g^2 term is c^4/8 - 11 c^3/6 + 15 c^2/2
-// - 9 c + 2, within 3 + c^4 / 4): the limit is 2-6% low in the lobe's core for g in 16..50, high
-// around c = 2, and further off in the tail, and it makes the three channels equal.
+// - 9 c + 2, within 3 + c^4 / 4): the limit is about 1/g low at the lobe's centre (6% at g = 16),
+// high around c = 2, further off in the tail, and it makes the three channels equal.
 TEST(He, RoughLimitIsOnlyFirstOrderInOneOverG) {
   for (double g : {16.0, 50.0, 300.0, 3e3, 1e4}) {
     for (double c : {0.0, 0.1, 0.5, 1.0, 2.0, 3.4, 5.0, 7.0}) {
