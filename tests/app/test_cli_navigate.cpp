@@ -147,6 +147,25 @@ TEST_F(CliNavigate, RejectsBadInputNamingIt) {
 
 // A contact sheet per tab through OCIO: a PNG of the documented layout (contact_sheet.h); a bad
 // view or tab is rejected by name and leaves no file.
+// bench fidelity renders what the navigator offers and prints, per model, the thumbnails'
+// errors and each tab's steps against eps, with the targets' verdicts.
+TEST_F(CliNavigate, BenchFidelityReportsEveryModelAndTab) {
+  CliResult r = run_cli("bench fidelity --db " + db().string() + " --materials 1 --radius 0.03");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("| model | images | median | worst | verdict |"), std::string::npos)
+      << r.out;
+  for (const ModelInfo& info : models()) {
+    const std::string model(info.name);
+    for (const char* tab : {"lobe", "diffuse", "specular", "models"})
+      EXPECT_NE(r.out.find("| " + model + " | " + tab + " | "), std::string::npos)
+          << model << " " << tab << "\n"
+          << r.out;
+  }
+  r = run_cli("bench fidelity --db " + db().string() + " --radius 0");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--radius"), std::string::npos) << r.err;
+}
+
 TEST_F(CliNavigate, VariationsWritesAContactSheetPerTab) {
   const std::string material = "--material ward:alpha_x=0.05,alpha_y=0.03,rho_d=0.1,rho_s=0.5";
   for (const char* tab : {"lobe", "diffuse", "specular", "models", "gallery"}) {
