@@ -310,12 +310,10 @@ ApiResponse NavigatorApi::info() const {
   return answer([&] {
     const Database& db = navigator_.database();
     json models = json::array();
-    std::optional<Material> start;
     for (const ModelInfo& m : brdfnav::models()) {
       const ModelEmbedding* embedding = db.embedding(m.id);
       if (!embedding) continue;
       models.push_back(model_json(m, embedding->grid()));
-      if (!start) start = default_material(m.id);
     }
     json tabs = json::array();
     for (Tab t : kTabs) tabs.push_back(tab_name(t));
@@ -328,7 +326,7 @@ ApiResponse NavigatorApi::info() const {
          {"displays", displays},
          {"colour_config", colour_.describe()},
          {"radius", {{"min", kRadiusMin}, {"max", kRadiusMax}, {"start", kRadiusStart}}},
-         {"start", material_json(*start)},
+         {"start", material_json(navigator_.start_material())},
          {"thumbnail_resolution", thumbnails_.resolution()},
          {"max_body_bytes", kMaxBodyBytes},
          {"database", database_json(db)}});

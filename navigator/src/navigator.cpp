@@ -120,6 +120,20 @@ std::string radius_requirement() {
   return std::string("must be a finite distance of at least ") + min;
 }
 
+Material Navigator::start_material() const {
+  const ProfileGrid& g = database_.manifest().grids.front();
+  Material m = default_material(g.model);
+  for (std::size_t d = 0; d < g.grid.dimensions(); ++d) {
+    const ParamSpec& spec = g.grid.specs()[d];
+    const std::vector<double>& axis = g.grid.axis(d);
+    m.params[d] =
+        from_scale(spec, (to_scale(spec, axis.front()) + to_scale(spec, axis.back())) / 2);
+  }
+  m.rho_d = Rgb::Constant(0.2);
+  m.rho_s = Rgb::Constant(0.3);
+  return m;
+}
+
 Eigen::VectorXf Navigator::embed(const Material& m) const {
   check_colorspace(m);
   return embedding_of(m.model).embed(m);

@@ -273,6 +273,23 @@ TEST(Navigator, ColoursAtTheEdgeOfTheirRangeAreClamped) {
   }
 }
 
+// The page starts from start_material() at radius 0.03 (app/serve_api.cpp), and the README's
+// example asks for this Ward material at 0.03: every lobe and colour direction has room to move.
+TEST(Navigator, TheStartAndTheReadmesMaterialHaveRoomInEveryDirection) {
+  const Navigator& nav = navigator();
+  for (const Material& m :
+       {nav.start_material(),
+        parse_material_spec("ward:alpha_x=0.05,alpha_y=0.05,rho_d=0.2,rho_s=0.3")}) {
+    SCOPED_TRACE(format_material_spec(m));
+    for (Tab tab : {Tab::lobe, Tab::diffuse, Tab::specular})
+      for (const Neighbor& n : nav.neighbors(m, 0.03, tab)) {
+        EXPECT_FALSE(n.at_boundary) << n.label;
+        EXPECT_FALSE(n.clamped) << n.label;
+      }
+  }
+  EXPECT_EQ(nav.start_material().model, nav.database().manifest().grids.front().model);
+}
+
 TEST(Navigator, ModelsTabShowsWhatTheCurrentModelCannot) {
   const Navigator& nav = navigator();
   std::size_t shown = 0;

@@ -108,6 +108,12 @@ class Navigator {
   // neighbour's distance is from that matte grey material.
   std::vector<Neighbor> gallery(int count = 8) const;
 
+  // Where an artist starts: the database's first model with each parameter at the middle of
+  // its database axis (in the parameter's scale), grey rho_d = 0.2 and rho_s = 0.3, a visible
+  // highlight. Its variations have room in every direction of every tab (a default material's
+  // dim rho_s = 0.04 sent most lobe walks to the grid's ends).
+  Material start_material() const;
+
   // The embedding of a material (its model must be in the database) and the distance through it.
   Eigen::VectorXf embed(const Material& m) const;
   double distance(const Material& a, const Material& b) const;
