@@ -283,7 +283,8 @@ ApiResponse error_response(int status, const std::string& message) {
 
 NavigatorApi::NavigatorApi(const ApiOptions& options)
     : navigator_(Navigator::open(options.db)),
-      thumbnails_(navigator_.database(), options.resolution) {}
+      thumbnails_(navigator_.database(), options.resolution),
+      exact_(navigator_.database(), thumbnails_.resolution()) {}
 
 ApiResponse NavigatorApi::handle(const ApiRequest& r) const {
   const auto route = std::find_if(std::begin(kRoutes), std::end(kRoutes),
@@ -348,10 +349,16 @@ ApiResponse NavigatorApi::neighbors(std::string_view body) const {
 
 ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
   return answer([&] {
-    const json request = parse_body(body, {"material", "display", "view"});
+    const json request = parse_body(body, {"material", "display", "view", "preview"});
     const Material m = read_material(navigator_.database(), require(request, "material"));
     const auto [display, view] = read_display_view(colour_, request);
-    const Image image = thumbnails_.render(m);
+    const auto preview = request.find("preview");
+    if (preview != request.end() && !preview->is_boolean())
+      throw RequestError("preview", "expected true or false, got " + shown(*preview));
+    const bool quick = preview != request.end() && preview->get<bool>();
+    const std::shared_ptr<const Image> rendered =
+        quick ? std::make_shared<const Image>(thumbnails_.render(m)) : exact_.render(m);
+    const Image& image = *rendered;
     const std::vector<std::uint8_t> rgba =
         colour_.apply(image.rgba.data(), image.width, image.height, display, view);
     return ApiResponse{200, "image/png", encode_png(rgba, image.width, image.height)};

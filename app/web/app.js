@@ -51,14 +51,16 @@ async function call(path, body, options = {}) {
 // to a variation already on screen, shows its image at once.
 const thumbnails = new Map();
 
-function thumbnail(material) {
-  const key = JSON.stringify([material, state.display, state.view]);
+// The PNG of a material's thumbnail: the exact render, or with `preview` the quick blend of the
+// database's images that stands in while the exact one renders.
+function thumbnail(material, preview = false) {
+  const key = JSON.stringify([material, state.display, state.view, preview]);
   let url = thumbnails.get(key);
   if (url) {
     thumbnails.delete(key);  // now the most recently used
     thumbnails.set(key, url);
   } else {
-    url = call('/api/thumbnail', { material, display: state.display, view: state.view })
+    url = call('/api/thumbnail', { material, display: state.display, view: state.view, preview })
       .then((r) => r.blob())
       .then((blob) => URL.createObjectURL(blob));
     url.catch(() => thumbnails.delete(key));
@@ -265,6 +267,12 @@ function notify(message) {
   noticeTimer = setTimeout(() => { $('#notice').hidden = true; }, 5000);
 }
 
+// The preview first, then the exact render in its place; resolves when the exact one is shown.
+async function progressive(img, material, gen) {
+  await show(img, thumbnail(material, true), gen);
+  await show(img, thumbnail(material), gen);
+}
+
 function showError(message) {
   $('#error').textContent = message;
   $('#error').hidden = !message;
@@ -290,7 +298,7 @@ async function redraw() {
   neighborQuery = new AbortController();
   progress.start('Finding variations\u2026');
   try {
-    const centreShown = show(centre.querySelector('img'), thumbnail(material), gen);
+    const centreShown = progressive(centre.querySelector('img'), material, gen);
     centreShown.catch(() => {});  // awaited below, unless this redraw is overtaken first
     const { neighbors } = await (await call('/api/neighbors',
       { material, radius: state.radius, tab: state.tab }, { signal: neighborQuery.signal })).json();
@@ -301,7 +309,7 @@ async function redraw() {
     const step = () => progress.set(`Rendering thumbnails ${++done} / ${total}`, done, total);
     progress.set(`Rendering thumbnails 0 / ${total}`, 0, total);
     await Promise.all([centreShown.then(step),
-      ...images.map(([n, img]) => show(img, thumbnail(n.material), gen).then(step))]);
+      ...images.map(([n, img]) => progressive(img, n.material, gen).then(step))]);
     if (gen !== generation) return;
     showError('');
   } catch (error) {
