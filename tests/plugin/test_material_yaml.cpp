@@ -151,7 +151,7 @@ TEST_F(MaterialYamlFiles, LoadMaterialTellsFilesFromSpecs) {
   EXPECT_THROW(read_material_yaml(dir_), MaterialFileError);
   // A name that is neither a file, a model nor a spec (a file name without its .yaml, a path) is
   // reported as the missing file it most likely is, with what would have been accepted.
-  for (const std::string name : {std::string("chosen"), (dir_ / "chosen").string()}) {
+  for (const std::string& name : {std::string("chosen"), (dir_ / "chosen").string()}) {
     try {
       load_material(name);
       FAIL() << name << ": no error";
