@@ -4,6 +4,8 @@
 // kind of bad input.
 #include "app/cli_runner.h"
 
+#include <brdfnav/precompute/env_map.h>
+
 #include <OpenImageIO/imageio.h>
 
 #include <gtest/gtest.h>
@@ -220,7 +222,7 @@ TEST(CliValidate, WritesEveryFigureAtSmallScale) {
   const YAML::Node report = YAML::LoadFile((out / "report.yaml").string());
   EXPECT_EQ(report["brdfnav_validation"].as<int>(), 1);
   EXPECT_EQ(report["settings"]["resolution"].as<int>(), 24);
-  EXPECT_EQ(report["settings"]["reference_env"].as<std::string>(), kWorld + "interior.exr")
+  EXPECT_EQ(report["settings"]["reference_env"].as<std::string>(), kDefaultEnvPath)
       << "the database's map";
   EXPECT_EQ(report["settings"]["scene"].as<std::string>(), "sphere");
   check_fig2(report["figure2"]);

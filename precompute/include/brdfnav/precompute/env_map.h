@@ -19,7 +19,9 @@
 
 namespace brdfnav {
 
-// The map the paper's metric uses unless told otherwise (Debian blender-data, CC0).
+// The map the paper's metric uses unless told otherwise (Debian blender-data, CC0). Its one
+// definition: every default of the CLI, the tests and the Slurm scripts (which ask `brdfnav
+// precompute --help`) comes from here.
 inline constexpr const char* kDefaultEnvPath =
     "/usr/share/blender/datafiles/studiolights/world/interior.exr";
 
