@@ -2,6 +2,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -9,16 +11,33 @@ namespace brdfnav::cli {
 
 namespace {
 
-// The goals of issue #7 and the paper's claim for Figure 3.
-constexpr double kGoalR2 = 0.95;
+// The paper's claim for Figure 2, under every map: the cube-root metric and CIELAB agree (their
+// R^2 within kPerceptualSame of each other) and both are clearly straighter than RGB L2 and the
+// BRDF-space metric (their R^2 higher by at least kClearMargin). The margin is 2.5 times the
+// difference that counts as the same, so that "clearly straighter" is never within the noise of
+// "the same". (Issue #7's goal R^2(cube root) >= 0.95 is retired: the map's dynamic range sets
+// R^2, 0.863 to 0.945 over Blender's maps; docs/VALIDATION.md.)
+constexpr double kPerceptualSame = 0.02;
+constexpr double kClearMargin = 0.05;
+// The paper's claim for Figure 3.
 constexpr double kPaperWithin = kAgreeingWithin;
 // The default map's goal (docs/VALIDATION.md, "Choosing the default map"): agreeing with at
 // least 5 of the other maps (of Blender's 7).
 constexpr std::size_t kGoalAgreeing = 5;
 
-bool fig2_goal(const PellaciniStudy& s) {
+bool fig2_claim(const PellaciniStudy& s) {
   // curves: cube_root, cielab, rgb, brdf_l2.
-  return s.curves[0].fit.r2 >= kGoalR2 && s.curves[0].fit.r2 > s.curves[2].fit.r2;
+  const double cube_root = s.curves[0].fit.r2, cielab = s.curves[1].fit.r2;
+  const double baseline = std::max(s.curves[2].fit.r2, s.curves[3].fit.r2);
+  return std::abs(cube_root - cielab) <= kPerceptualSame &&
+         std::min(cube_root, cielab) >= baseline + kClearMargin;
+}
+
+// Whether the claim holds under the reference and every other map.
+bool fig2_claim_everywhere(const ValidationResults& r) {
+  return fig2_claim(r.fig2) &&
+         std::all_of(r.fig2_others.begin(), r.fig2_others.end(),
+                     [](const NamedPellacini& o) { return fig2_claim(o.study); });
 }
 
 // Whether every other natural map (entries 1 .. others) agrees with the reference as the paper's.
@@ -78,16 +97,21 @@ void emit_pellacini(YAML::Emitter& out, const PellaciniStudy& s) {
         << YAML::Value << c.fit.intercept << YAML::Key << "r2" << YAML::Value << c.fit.r2
         << YAML::Key << "last_step_ratio" << YAML::Value << last_step_ratio(c) << YAML::EndMap;
   }
-  out << YAML::EndMap << YAML::Key << "goal_holds" << YAML::Value << fig2_goal(s);
+  out << YAML::EndMap << YAML::Key << "claim_holds" << YAML::Value << fig2_claim(s);
   out << YAML::Key << "env_luminance" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key
       << "peak" << YAML::Value << s.env.peak << YAML::Key << "mean" << YAML::Value << s.env.mean
       << YAML::EndMap;
 }
 
-void emit_fig2(YAML::Emitter& out, const PellaciniStudy& s,
-               const std::vector<NamedPellacini>& others) {
+void emit_fig2(YAML::Emitter& out, const ValidationResults& r) {
+  const PellaciniStudy& s = r.fig2;
+  const std::vector<NamedPellacini>& others = r.fig2_others;
   out << YAML::Key << "figure2" << YAML::Value << YAML::BeginMap << YAML::Key << "d";
   seq(out << YAML::Value, s.d);
+  out << YAML::Key << "claim" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key
+      << "perceptual_same" << YAML::Value << kPerceptualSame << YAML::Key << "clear_margin"
+      << YAML::Value << kClearMargin << YAML::EndMap << YAML::Key << "claim_holds_everywhere"
+      << YAML::Value << fig2_claim_everywhere(r);
   emit_pellacini(out, s);
   out << YAML::Key << "other_envs" << YAML::Value << YAML::BeginMap;
   for (const NamedPellacini& o : others) {
@@ -227,29 +251,37 @@ void md_fig2(std::ostringstream& md, const PellaciniStudy& s) {
   for (const CumulativeCurve& c : s.curves)
     md << "| " << c.metric << " | " << num(c.fit.r2, 4) << " | " << num(c.fit.slope, 4) << " | "
        << num(c.values.back(), 4) << " | " << num(last_step_ratio(c), 2) << " |\n";
-  md << "\nGoal R^2(cube_root) >= " << kGoalR2
-     << " and R^2(cube_root) > R^2(rgb): " << verdict(fig2_goal(s))
-     << ". The map's brightest texel is " << num(s.env.peak / s.env.mean, 0)
-     << " times its mean luminance.\n\n";
+  md << "\nThe paper's claim, that the cube-root metric and CIELAB agree (R^2 within "
+     << num(kPerceptualSame, 2) << ") and are both clearly straighter than RGB L2 and the "
+     << "BRDF-space metric (R^2 higher by at least " << num(kClearMargin, 2)
+     << "): " << verdict(fig2_claim(s)) << " under this map. Its brightest texel is "
+     << num(s.env.peak / s.env.mean, 0) << " times its mean luminance.\n\n";
 }
 
-// The same stimuli under every other map: R^2 of each image metric and the goal.
-void md_fig2_others(std::ostringstream& md, const std::string& reference, const PellaciniStudy& s,
-                    const std::vector<NamedPellacini>& others) {
+// The same stimuli under every other map: R^2 of each image metric and the paper's claim.
+void md_fig2_others(std::ostringstream& md, const ValidationResults& r) {
+  const std::string& reference = r.fig3.entries.front().name;
+  const PellaciniStudy& s = r.fig2;
+  const std::vector<NamedPellacini>& others = r.fig2_others;
   if (others.empty()) return;
   md << "The same stimuli under the other maps, with each map's brightest texel against its mean "
         "luminance (the brighter its small sources, the more the last, mirror-like step "
         "outweighs the others):\n\n"
-     << "| map | R^2 cube_root | R^2 cielab | R^2 rgb | last step / mean step (cube_root) | "
-        "peak / mean luminance | goal |\n|---|---|---|---|---|---|---|\n";
+     << "| map | R^2 cube_root | R^2 cielab | R^2 rgb | R^2 brdf_l2 | last step / mean step "
+        "(cube_root) | peak / mean luminance | the paper's claim |\n"
+        "|---|---|---|---|---|---|---|---|\n";
   const auto row = [&md](const std::string& name, const PellaciniStudy& p) {
     md << "| " << name << " | " << num(p.curves[0].fit.r2, 3) << " | " << num(p.curves[1].fit.r2, 3)
-       << " | " << num(p.curves[2].fit.r2, 3) << " | " << num(last_step_ratio(p.curves[0]), 2)
-       << " | " << num(p.env.peak / p.env.mean, 0) << " | " << verdict(fig2_goal(p)) << " |\n";
+       << " | " << num(p.curves[2].fit.r2, 3) << " | " << num(p.curves[3].fit.r2, 3) << " | "
+       << num(last_step_ratio(p.curves[0]), 2) << " | " << num(p.env.peak / p.env.mean, 0) << " | "
+       << verdict(fig2_claim(p)) << " |\n";
   };
   row(reference + " (reference)", s);
   for (const NamedPellacini& o : others) row(o.env, o.study);
-  md << "\n";
+  std::size_t holding = fig2_claim(s);
+  for (const NamedPellacini& o : others) holding += fig2_claim(o.study);
+  md << "\nThe paper's claim under every map: " << verdict(fig2_claim_everywhere(r))
+     << " (it holds under " << holding << " of the " << others.size() + 1 << " maps).\n\n";
 }
 
 // Each natural map's agreement with the others, both ways, and the most representative map.
@@ -371,7 +403,7 @@ std::string report_yaml(const ValidationResults& r, const std::vector<ReportFile
       << YAML::Value << YAML::Flow << r.other_envs;
   if (!r.database.empty()) out << YAML::Key << "database" << YAML::Value << r.database;
   out << YAML::EndMap;
-  emit_fig2(out, r.fig2, r.fig2_others);
+  emit_fig2(out, r);
   emit_fig3(out, r);
   emit_spacing(out, "figure8", kFig8Parameter, r.fig8);
   emit_spacing(out, "figure9", kFig9Parameter, r.fig9);
@@ -394,7 +426,7 @@ std::string report_markdown(const ValidationResults& r, const std::vector<Report
   for (const std::string& env : r.other_envs) md << " `" << env << "`";
   md << " and a constant environment. Every number is in report.yaml.\n\n";
   md_fig2(md, r.fig2);
-  md_fig2_others(md, r.fig3.entries.front().name, r.fig2, r.fig2_others);
+  md_fig2_others(md, r);
   md << images(files, "figure2");
   md_fig3(md, r);
   md << images(files, "figure3");

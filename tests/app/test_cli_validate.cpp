@@ -13,6 +13,7 @@
 
 #include <unistd.h>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -65,7 +66,19 @@ void check_pellacini(const YAML::Node& f, const std::string& map) {
                 (total - c["cumulative"][9].as<double>()) / (total / 10), 1e-4)
         << map << m;
   }
-  EXPECT_TRUE(f["goal_holds"].IsScalar()) << map;
+  // The paper's claim, from the R^2 the report gives: the cube root and CIELAB within 0.02 of
+  // each other, both at least 0.05 above RGB L2 and the BRDF-space metric.
+  const auto r2 = [&f](const char* m) { return f["metrics"][m]["r2"].as<double>(); };
+  const double perceptual = std::min(r2("cube_root"), r2("cielab"));
+  EXPECT_EQ(f["claim_holds"].as<bool>(),
+            std::abs(r2("cube_root") - r2("cielab")) <= 0.02 &&
+                perceptual >= std::max(r2("rgb"), r2("brdf_l2")) + 0.05)
+      << map;
+  // Holds at 24 x 24 under every map but sunset (0.028 apart; 0.025 at 128 x 128): the
+  // cube-root metric and CIELAB give curves equally straight.
+  if (map != "sunset") {
+    EXPECT_NEAR(r2("cube_root"), r2("cielab"), 0.02) << map;
+  }
   const double peak = f["env_luminance"]["peak"].as<double>();
   EXPECT_GE(peak, f["env_luminance"]["mean"].as<double>()) << map;
   EXPECT_GT(f["env_luminance"]["mean"].as<double>(), 0) << map;
@@ -83,7 +96,14 @@ void check_fig2(const YAML::Node& f) {
   auto under = [&f](const std::string& map) {
     return map == kReference ? f : f["other_envs"][map];
   };
-  for (const std::string& map : kMaps) check_pellacini(under(map), map);
+  bool everywhere = true;
+  for (const std::string& map : kMaps) {
+    check_pellacini(under(map), map);
+    everywhere = everywhere && under(map)["claim_holds"].as<bool>();
+  }
+  EXPECT_EQ(f["claim"]["perceptual_same"].as<double>(), 0.02);
+  EXPECT_EQ(f["claim"]["clear_margin"].as<double>(), 0.05);
+  EXPECT_EQ(f["claim_holds_everywhere"].as<bool>(), everywhere);
   // Blender's maps as `oiiotool --stats` reads them: interior's lamps reach about 34,000 against
   // a mean near 1, courtyard's brightest sky about 55.
   auto range = [](const YAML::Node& m) {
