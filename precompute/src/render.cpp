@@ -2,6 +2,7 @@
 
 #include <brdfnav/core/parallel_for.h>
 #include "geometry.h"
+#include "materialx_ggx.h"
 #include "quadrature.h"
 #include "ward_grid.h"
 
@@ -368,6 +369,14 @@ Image Renderer::render(const Material& material) {
   require_render_colorspace(material);
   const Lobe lobe = make_lobe(material.model, material.params);
   return compose(diffuse(), specular(lobe), material.rho_d, material.rho_s);
+}
+
+Image Renderer::materialx_ggx(const Ggx& lobe, bool compensation) {
+  const MaterialxGgx terms{lobe.alpha_x, lobe.alpha_y, compensation};
+  const Lobe shaping = lobe;
+  return impl_->render_pass([&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
+    return impl_->specular_pixel(terms, shaping, p, i, s);
+  });
 }
 
 ImageMetadata render_metadata(const Renderer& renderer, const Material* material) {
