@@ -1,4 +1,4 @@
-// `brdfnav demo`: a first look at the five closures for a newcomer — their lobes in the plane of
+// `brdfnav demo`: a first look at the six closures for a newcomer — their lobes in the plane of
 // incidence (a PNG plot and a CSV) and their directional albedo at a few angles (a table).
 #include "commands.h"
 #include "plot.h"
@@ -37,6 +37,8 @@ constexpr Setting kSettings[] = {
     {"Lafortune cz=0.56 n=300", "lafortune:cz=0.56,n=300"},
     {"He sigma=0.1 tau=3", "he:sigma=0.1,tau=3,eta=1.5"},
     {"He sigma=1 tau=4", "he:sigma=1,tau=4,eta=1.5"},
+    {"GGX alpha=0.05", "ggx:alpha_x=0.05,alpha_y=0.05"},
+    {"GGX alpha=0.4/0.1", "ggx:alpha_x=0.4,alpha_y=0.1"},
 };
 
 // Directional albedo of the lobe (rho_d = 0, rho_s = 1) at outgoing polar angle theta_o,
@@ -114,7 +116,7 @@ void write_sphere_sheet(const std::filesystem::path& dir, const SceneOptions& sc
   const EnvMap env = load_env(scene_options);
   const Scene scene = load_scene(scene_options);
   Renderer renderer(env, scene, scene_options.resolution);
-  const int res = scene_options.resolution, columns = 5, gap = 12, font = 13;
+  const int res = scene_options.resolution, columns = 6, gap = 12, font = 13;
   const int line = font + font / 3, label_h = 6 + 2 * line;
   const char* font_name = "DejaVuSans";
   int cell_w = res;
@@ -154,7 +156,7 @@ void write_sphere_sheet(const std::filesystem::path& dir, const SceneOptions& sc
 
 void add_demo_command(CLI::App& app) {
   auto* demo = app.add_subcommand(
-      "demo", "Plot the five models' lobes, tabulate their albedo and render them on a sphere");
+      "demo", "Plot the six models' lobes, tabulate their albedo and render them on a sphere");
   auto out = std::make_shared<std::string>("out/demo");
   auto scene = std::make_shared<SceneOptions>();
   scene->resolution = 128;

@@ -3,6 +3,9 @@
 // `brdfnav export`: a chosen material with its provenance and its equivalents in the other
 // models. All read a database made by `brdfnav precompute` (docs/NAVIGATION.md).
 #include "commands.h"
+#include "export_formats.h"
+
+#include <brdfnav/core/atomic_file.h>
 
 #include <brdfnav/io/material_yaml.h>
 #include <brdfnav/navigator/navigation_yaml.h>
@@ -181,14 +184,28 @@ void add_variations_command(CLI::App& app) {
 
 void add_export_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "export", "Write a material with its provenance and its best fit in every other model");
+      "export",
+      "Write a material for brdfnav (its provenance and best fit in every other model) or for a "
+      "renderer (its ggx form, MaterialX or Cycles, with the residual in the image metric)");
   auto in = std::make_shared<Inputs>();
   auto out = std::make_shared<std::string>();
+  auto format = std::make_shared<std::string>("yaml");
+  auto resolution = std::make_shared<int>(0);
   add_inputs(*cmd, *in);
-  cmd->add_option("--out,-o", *out, "YAML file to write (atomically)")->required();
+  cmd->add_option("--out,-o", *out, "File to write (atomically)")->required();
+  cmd->add_option("--format", *format,
+                  "yaml (brdfnav's), materialx (a MaterialX 1.38 document) or cycles (what "
+                  "hosts/blender/brdfnav_cycles.py reads)")
+      ->capture_default_str()
+      ->check(CLI::IsMember(export_format_names()));
+  cmd->add_option("--res", *resolution,
+                  "materialx, cycles: the resolution at which the residuals are rendered "
+                  "(default: the database's)")
+      ->check(CLI::Range(8, 4096));
   cmd->callback([=] {
     const Navigator navigator = open_navigator(*in);
-    write_export(*out, navigator, load_current(*in));
+    write_file_atomic(*out, export_document(navigator, load_current(*in),
+                                            parse_export_format(*format), *resolution));
   });
 }
 

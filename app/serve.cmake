@@ -18,7 +18,8 @@ add_custom_command(OUTPUT ${web_cpp}
 add_library(brdfnav_serve_api STATIC serve_api.cpp exact_thumbnails.cpp)
 target_include_directories(brdfnav_serve_api PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(brdfnav_serve_api PUBLIC brdfnav::navigator_cxx brdfnav::precompute brdfnav::ocio
-                      PRIVATE brdfnav_io nlohmann_json::nlohmann_json OpenImageIO::OpenImageIO)
+                      PRIVATE brdfnav_io brdfnav_export nlohmann_json::nlohmann_json
+                              OpenImageIO::OpenImageIO)
 
 target_sources(brdfnav_cli PRIVATE cmd_serve.cpp ${web_cpp})
 target_link_libraries(brdfnav_cli PRIVATE brdfnav_serve_api PkgConfig::brdfnav_httplib

@@ -1,5 +1,7 @@
 #include "serve_api.h"
 
+#include "export_formats.h"
+
 #include <brdfnav/io/material_yaml.h>
 #include <brdfnav/navigator/navigation_yaml.h>
 
@@ -133,18 +135,6 @@ Material read_material(const Database& db, const json& value) {
     throw RequestError("material", "unknown key of " + std::to_string(key->size()) + " bytes " +
                                        shown(json(*key)));
   return check_held(db, material_from_node(YAML::Load(value.dump()), "material", false));
-}
-
-json material_json(const Material& m) {
-  const ModelInfo& info = model_info(m.model);
-  json params = json::object();
-  for (std::size_t i = 0; i < info.params.size(); ++i)
-    params[std::string(info.params[i].name)] = m.params[i];
-  return {{"model", info.name},
-          {"params", params},
-          {"rho_d", {m.rho_d[0], m.rho_d[1], m.rho_d[2]}},
-          {"rho_s", {m.rho_s[0], m.rho_s[1], m.rho_s[2]}},
-          {"colorspace", m.colorspace}};
 }
 
 double read_radius(const json& value) {
@@ -302,7 +292,7 @@ ApiResponse NavigatorApi::handle(const ApiRequest& r) const {
     return error_response(400, "body: larger than " + std::to_string(kMaxBodyBytes) + " bytes");
   if (r.path == "/api/neighbors") return neighbors(r.body);
   if (r.path == "/api/thumbnail") return thumbnail(r.body);
-  if (r.path == "/api/export") return export_yaml(r.body);
+  if (r.path == "/api/export") return export_material(r.body);
   const auto name = r.query.find("name");
   return import_yaml(r.body, name == r.query.end() ? "" : name->second);
 }
@@ -365,11 +355,25 @@ ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
   });
 }
 
-ApiResponse NavigatorApi::export_yaml(std::string_view body) const {
+ApiResponse NavigatorApi::export_material(std::string_view body) const {
   return answer([&] {
-    const json request = parse_body(body, {"material"});
+    const json request = parse_body(body, {"material", "format"});
     const Material m = read_material(navigator_.database(), require(request, "material"));
-    return ApiResponse{200, "application/yaml", export_to_yaml(navigator_, m)};
+    ExportFormat format = ExportFormat::yaml;
+    if (const std::optional<std::string> name = optional_string(request, "format")) {
+      try {
+        format = parse_export_format(*name);
+      } catch (const std::invalid_argument&) {
+        throw RequestError("format", "expected one of yaml, materialx, cycles, got " +
+                                         shown(request.at("format")));
+      }
+    }
+    // The renderers' formats render the material and its ggx form to state their distance: at
+    // the database's resolution, at most kExportResolution, so that the button answers in
+    // seconds.
+    const int resolution = std::min(navigator_.database().manifest().resolution, kExportResolution);
+    return ApiResponse{200, std::string(export_content_type(format)),
+                       export_document(navigator_, m, format, resolution)};
   });
 }
 

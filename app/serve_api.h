@@ -19,6 +19,10 @@
 
 namespace brdfnav::cli {
 
+// The largest resolution at which the export for renderers renders the material and its ggx form
+// to state their distance (the database's, if smaller).
+inline constexpr int kExportResolution = 64;
+
 // The largest request body the API reads; a material or an export is a few kilobytes.
 inline constexpr std::size_t kMaxBodyBytes = 64 * 1024;
 // The largest body the server still reads to the end to refuse it with the API's 400: httplib
@@ -76,8 +80,10 @@ class NavigatorApi {
   // the material (ExactThumbnails), or with preview: true the quick blend of the database's
   // images (Thumbnails).
   ApiResponse thumbnail(std::string_view body) const;
-  // POST /api/export {material} -> the YAML `brdfnav export` writes.
-  ApiResponse export_yaml(std::string_view body) const;
+  // POST /api/export {material[, format]} -> what `brdfnav export --format FORMAT` writes
+  // (yaml, the default: application/yaml; materialx: application/xml; cycles:
+  // application/json), the renderers' formats measured at kExportResolution at most.
+  ApiResponse export_material(std::string_view body) const;
   // POST /api/import[?name=FILE] (a material YAML file, or an export) -> {material}; errors
   // name FILE (default "upload") and the line.
   ApiResponse import_yaml(std::string_view body, std::string_view name) const;

@@ -362,19 +362,32 @@ function selectTab(tab) {
   redraw();
 }
 
-async function exportYaml() {
+// The export formats: the file's extension and type. MaterialX and Cycles take the material's
+// ggx form; the server renders it to state the residual, which takes a few seconds.
+const EXPORT_FORMATS = {
+  yaml: { extension: 'yaml', type: 'application/yaml' },
+  materialx: { extension: 'mtlx', type: 'application/xml' },
+  cycles: { extension: 'json', type: 'application/json' },
+};
+
+async function exportMaterial() {
+  const button = $('#export');
+  button.disabled = true;
   try {
     const material = state.history[state.at];
-    const text = await (await call('/api/export', { material })).text();
+    const format = $('#export-format').value;
+    const text = await (await call('/api/export', { material, format })).text();
     const link = document.createElement('a');
-    link.href = URL.createObjectURL(new Blob([text], { type: 'application/yaml' }));
-    link.download = `brdfnav-${material.model}.yaml`;
+    link.href = URL.createObjectURL(new Blob([text], { type: EXPORT_FORMATS[format].type }));
+    link.download = `brdfnav-${material.model}.${EXPORT_FORMATS[format].extension}`;
     link.click();
     setTimeout(() => URL.revokeObjectURL(link.href), 10000);
     notify(`Exported ${link.download}: ${modelInfo(material.model).title}, with its ` +
       'equivalents in the other models');
   } catch (error) {
     showError(`Export: ${error.message}`);
+  } finally {
+    button.disabled = false;
   }
 }
 
@@ -458,7 +471,7 @@ function wire() {
     redraw();
   });
   $('#view').addEventListener('change', (event) => { state.view = event.target.value; redraw(); });
-  $('#export').addEventListener('click', exportYaml);
+  $('#export').addEventListener('click', exportMaterial);
   $('#load-file').addEventListener('change', (event) => {
     const [file] = event.target.files;
     if (file) loadYaml(file);

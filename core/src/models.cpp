@@ -8,8 +8,16 @@ namespace brdfnav {
 namespace {
 
 template <typename L>
+constexpr std::string_view formula_of() {
+  if constexpr (requires { L::kFormula; })
+    return L::kFormula;
+  else
+    return {};
+}
+
+template <typename L>
 constexpr ModelInfo info_of(ModelId id) {
-  return {id, L::kName, L::kTitle, L::kParams, MirrorLobe<L>};
+  return {id, L::kName, L::kTitle, L::kParams, MirrorLobe<L>, formula_of<L>()};
 }
 
 template <std::size_t... I>

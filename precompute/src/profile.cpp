@@ -43,6 +43,7 @@ std::vector<ProfileGrid> test_grids() {
                              table_axis(M::lafortune, 1, 20)}));
   grids.push_back(grid_of(
       M::he, {table_axis(M::he, 0, 12), table_axis(M::he, 1, 12), {1.5, 1.9, 2.5, 3.2, 4}}));
+  grids.push_back(grid_of(M::ggx, {table_axis(M::ggx, 0, 17), table_axis(M::ggx, 1, 17)}));
   return grids;
 }
 
@@ -55,6 +56,7 @@ std::vector<ProfileGrid> smoke_grids() {
   grids.push_back(grid_of(ModelId::cook_torrance, {{0.01, 1}, {0.005, 0.06, 0.7}}));
   grids.push_back(grid_of(ModelId::lafortune, {{0.54, 0.57735026918962573, 0.6}, {2, 16384}}));
   grids.push_back(grid_of(ModelId::he, {{0.02, 2.56}, {2, 128}, {1.5, 4}}));
+  grids.push_back(grid_of(ModelId::ggx, {{0.01, 0.1, 1}, {0.01, 0.1, 1}}));
   return grids;
 }
 

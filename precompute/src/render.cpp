@@ -2,11 +2,13 @@
 
 #include <brdfnav/core/parallel_for.h>
 #include "geometry.h"
+#include "materialx_ggx.h"
 #include "quadrature.h"
 #include "ward_grid.h"
 
 #include <cstdio>
 #include <optional>
+#include <stdexcept>
 
 namespace brdfnav {
 
@@ -154,17 +156,20 @@ struct Renderer::Impl {
                      p.normal, p, s);
   }
 
-  // A lobe's integral at pixel p, in the pixel's frame and shaped as `shaping` at wo there, plus
-  // its mirror term: kernel(frame, wo) is the kernel, add_mirror(sum, wo) adds the mirror term
-  // to the sum.
+  // A lobe's integral at pixel p, in the pixel's frame and shaped as `shaping` at wo there (in
+  // its parts, if it has any), plus its mirror term: kernel(frame, wo, part) is the kernel of a
+  // part, add_mirror(sum, wo) adds the mirror term to the sum.
   template <typename Value, typename MakeKernel, typename AddMirror>
   Value lobe_pixel(const Lobe& shaping, const SurfacePoint& p, QuadratureScratch& s,
                    MakeKernel kernel, AddMirror add_mirror) const {
     const Frame frame = pixel_frame(p);
     const Vec3 wo = frame.to_local(kViewDirection);
     if (wo.z() <= 0) return zero<Value>();
-    const KernelShape shape = lobe_shape(shaping, wo).to_world(frame);
-    Value sum = integrate(kernel(frame, wo), shape, p.normal, p, s);
+    Value sum = zero<Value>();
+    for (const KernelShape& local : lobe_shapes(shaping, wo)) {
+      const KernelShape shape = local.to_world(frame);
+      sum += integrate(kernel(frame, wo, shape.part), shape, p.normal, p, s);
+    }
     add_mirror(sum, wo);
     return sum;
   }
@@ -174,7 +179,9 @@ struct Renderer::Impl {
                      QuadratureScratch& s) const {
     return lobe_pixel<Rgb>(
         any, p, s,
-        [&](const Frame& frame, const Vec3& wo) { return LobeKernel<L>(lobe, frame, wo); },
+        [&](const Frame& frame, const Vec3& wo, const std::optional<SlopeWeight>& part) {
+          return LobeKernel<L>(lobe, frame, wo, part);
+        },
         [&](Rgb& sum, const Vec3& wo) {
           if constexpr (MirrorLobe<L>) sum += lobe.mirror_weight(wo) * (*mirrored)[i];
         });
@@ -187,7 +194,9 @@ struct Renderer::Impl {
                          std::size_t i, QuadratureScratch& s) const {
     return lobe_pixel<BatchValue>(
         lobe, p, s,
-        [&](const Frame& frame, const Vec3& wo) {
+        [&](const Frame& frame, const Vec3& wo, const std::optional<SlopeWeight>& part) {
+          // Lobes rendered in parts have no Fresnel parameter (shares_quadrature()).
+          if (part) throw std::logic_error("a batch of lobes rendered in parts");
           return FresnelBatchKernel<L>(lobe, params, frame, wo);
         },
         [&](BatchValue& sum, const Vec3& wo) {
@@ -360,6 +369,14 @@ Image Renderer::render(const Material& material) {
   require_render_colorspace(material);
   const Lobe lobe = make_lobe(material.model, material.params);
   return compose(diffuse(), specular(lobe), material.rho_d, material.rho_s);
+}
+
+Image Renderer::materialx_ggx(const Ggx& lobe, bool compensation) {
+  const MaterialxGgx terms{lobe.alpha_x, lobe.alpha_y, compensation};
+  const Lobe shaping = lobe;
+  return impl_->render_pass([&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
+    return impl_->specular_pixel(terms, shaping, p, i, s);
+  });
 }
 
 ImageMetadata render_metadata(const Renderer& renderer, const Material* material) {

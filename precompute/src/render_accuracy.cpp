@@ -25,6 +25,9 @@ const std::vector<AccuracySetting>& accuracy_settings() {
       {M::he, "smooth", {0.1, 10, 1.5}},
       {M::he, "medium", {0.3, 8, 2}},
       {M::he, "rough", {1.5, 4, 4}},
+      {M::ggx, "smooth", {0.02, 0.03}},
+      {M::ggx, "medium", {0.12, 0.08}},
+      {M::ggx, "rough", {0.5, 0.6}},
   };
   return settings;
 }

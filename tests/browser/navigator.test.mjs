@@ -324,6 +324,29 @@ test('Export YAML downloads the export of the current material', async () => {
   await shot('exported');
 });
 
+test('Export in the renderers\' formats downloads the material\'s ggx form', async () => {
+  const current = await centre();
+  const downloaded = async (format, name) => {
+    await page.selectOption('#export-format', format);
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export')]);
+    assert.equal(download.suggestedFilename(), `brdfnav-${current.model}.${name.split('.')[1]}`);
+    const file = path.join(artefacts, name);
+    await download.saveAs(file);
+    return fs.readFileSync(file, 'utf8');
+  };
+  const cycles = JSON.parse(await downloaded('cycles', 'export.json'));
+  assert.equal(cycles.brdfnav_cycles, 1);
+  assert.equal(cycles.material.model, 'ggx');
+  assert.deepEqual(cycles.chosen, current);
+  assert.ok(cycles.residual >= 0);
+  const mtlx = await downloaded('materialx', 'export.mtlx');
+  assert.match(mtlx, /^<\?xml version="1.0"\?>\n<materialx version="1.38"/);
+  assert.match(mtlx, /<generalized_schlick_bsdf name="brdfnav_specular" type="BSDF">/);
+  assert.ok(mtlx.includes('in brdfnav\'s image metric'), 'the comment states the distances');
+  await page.selectOption('#export-format', 'yaml');
+  await shot('exported-for-renderers');
+});
+
 test('back and forward walk the history', async () => {
   await page.click('#back');
   await settled();

@@ -5,7 +5,7 @@ namespace brdfnav {
 namespace {
 
 TEST(Params, EveryModelHasAConsistentTable) {
-  ASSERT_EQ(models().size(), 5u);
+  ASSERT_EQ(models().size(), 6u);
   for (const ModelInfo& m : models()) {
     EXPECT_EQ(&model_info(m.id), &m);
     EXPECT_EQ(find_model(m.name), &m);
@@ -36,6 +36,8 @@ TEST(Params, GridsMatchTableOne) {
   EXPECT_EQ(count(ModelId::he, 2), 5u);
   EXPECT_EQ(count(ModelId::lafortune, 0), 14u);
   EXPECT_EQ(count(ModelId::lafortune, 1), 13u);
+  EXPECT_EQ(count(ModelId::ggx, 0), 13u);  // not the paper's: alpha 0.01..1, log-spaced
+  EXPECT_EQ(count(ModelId::ggx, 1), 13u);
 }
 
 TEST(Params, LogGridsAreGeometric) {

@@ -197,6 +197,71 @@ TEST(SpotLafortune, CzAboveThePhongPointNormalisesByCz) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// GGX, written as Cycles 3.4 writes it (bsdf_microfacet_ggx_eval_reflect): the slopes of the
+// unit half vector m, (sx, sy) = (-m.x / (m.z ax), -m.y / (m.z ay)),
+// D = 1 / ((1 + sx^2 + sy^2)^2 pi ax ay m.z^4), and per direction w
+// G1 = 2 / (1 + sqrt(1 + alpha_w^2 tan^2(theta_w))) with alpha_w^2 = cos^2(phi_w) ax^2 +
+// sin^2(phi_w) ay^2; f = D G1(wi) G1(wo) / (4 cos_i cos_o), pdf = G1(wo) D / (4 cos_o).
+
+TEST(SpotGgx, IsotropicWithBothDirectionsMasked) {
+  const Ggx lobe(std::array{0.2, 0.2});
+  const Vec3 wi = dir(25, 10), wo = dir(60, 170);
+  // a=0.2; a2=a*a; wi=d(25,10); wo=d(60,170); H=[x+y for x,y in zip(wi,wo)];
+  // c=H[2]/sqrt(dot(H,H)); t2=(1-c*c)/(c*c); D=a2/(pi*c**4*(a2+t2)**2);
+  // G1=lambda ct: 2/(1+sqrt(1+a2*(1-ct*ct)/(ct*ct)));
+  // print(repr(D*G1(wi[2])*G1(wo[2])/(4*wi[2]*wo[2]))); print(repr(G1(wo[2])*D/(4*wo[2])))
+  expect_grey(lobe.eval(wi, wo), 0.32761123953544097);
+  expect_rel(lobe.pdf(wi, wo), 0.2975608436229698);
+  // Reciprocal: the same value with the directions swapped.
+  expect_grey(lobe.eval(wo, wi), 0.32761123953544097);
+}
+
+TEST(SpotGgx, AlphaXStretchesTheLobeAlongX) {
+  // wo = normal (G1 = 1), wi at 20 deg: the half vector leans 10 deg along x or along y.
+  const Ggx lobe(std::array{0.3, 0.1});
+  const Vec3 wo = dir(0, 0);
+  // t=tan(radians(10)); c=cos(radians(10)); ci=cos(radians(20));
+  // G1=lambda a,ct: 2/(1+sqrt(1+a*a*(1-ct*ct)/(ct*ct)));
+  // print(repr(1/((1+(t/0.3)**2)**2*pi*0.3*0.1*c**4)*G1(0.3,ci)/(4*ci)))
+  expect_grey(lobe.eval(dir(20, 0), wo), 1.6529065939505447);
+  // print(repr(1/((1+(t/0.1)**2)**2*pi*0.3*0.1*c**4)*G1(0.1,ci)/(4*ci)))
+  expect_grey(lobe.eval(dir(20, 90), wo), 0.17767884906614292);
+}
+
+TEST(SpotGgx, GeneralDirections) {
+  const Ggx lobe(std::array{0.3, 0.1});
+  // ax,ay=0.3,0.1; wi=d(35,30); wo=d(38,215); H=[a+b for a,b in zip(wi,wo)]; n=sqrt(dot(H,H));
+  // m=[x/n for x in H]; sx=-m[0]/(m[2]*ax); sy=-m[1]/(m[2]*ay); L=1+sx*sx+sy*sy;
+  // D=1/(L*L*pi*ax*ay*m[2]**4); G1=lambda w: 2/(1+sqrt(1+(w[0]**2*ax**2+w[1]**2*ay**2)/
+  //   (w[0]**2+w[1]**2)*(1-w[2]**2)/w[2]**2));
+  // print(repr(D*G1(wi)*G1(wo)/(4*wi[2]*wo[2]))); print(repr(G1(wo)*D/(4*wo[2])))
+  expect_grey(lobe.eval(dir(35, 30), dir(38, 215)), 2.9552005246529407);
+  expect_rel(lobe.pdf(dir(35, 30), dir(38, 215)), 2.441353649243159);
+  EXPECT_EQ(lobe.eval(dir(95, 30), dir(38, 215))[0], 0.0);
+  EXPECT_EQ(lobe.eval(dir(35, 30), dir(95, 215))[0], 0.0);
+}
+
+TEST(SpotGgx, TheKernelOverAnArrayOfDirectionsIsTheKernelAtEach) {
+  const Ggx::Bound bound = Ggx(std::array{0.05, 0.005}).bind(dir(38, 215));
+  expect_rel(Ggx(std::array{0.3, 0.1}).bind(dir(38, 215)).eval_cos(dir(35, 30)),
+             2.9552005246529407 * dir(35, 30).z());
+  std::vector<Vec3> wi;
+  for (double theta : {36.0, 37.9, 38.0, 38.1, 40.0, 60.0, 95.0})
+    for (double phi : {30.0, 34.0, 35.0, 36.0, 90.0}) wi.push_back(dir(theta, phi));
+  const auto n = static_cast<Eigen::Index>(wi.size());
+  Eigen::ArrayXd x(n), y(n), z(n), out(n);
+  for (Eigen::Index i = 0; i < n; ++i) x[i] = wi[i].x(), y[i] = wi[i].y(), z[i] = wi[i].z();
+  bound.eval_cos(x, y, z, out, [](Eigen::Ref<Eigen::ArrayXd>) {});
+  int lit = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double expected = bound.eval_cos(wi[i]);
+    EXPECT_NEAR(out[i], expected, 1e-13 * expected) << "direction " << i;
+    lit += expected > 1e-3;
+  }
+  EXPECT_GE(lit, 3);
+}
+
+// ---------------------------------------------------------------------------------------------
 // The closure: f = rho_d / pi + rho_s * lobe, per RGB channel
 
 TEST(SpotClosure, ComposesRgbDiffuseAndLobe) {

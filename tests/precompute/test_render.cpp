@@ -333,6 +333,7 @@ TEST(Render, ImagesAreThoseOfThisRevision) {
       {"cook_torrance", Rgb(0.2408423245, 0.2180038805, 0.198019653)},
       {"lafortune", Rgb(0.03203352619, 0.0244050121, 0.01480160368)},
       {"he", Rgb(0.176047284, 0.1571587494, 0.1336550684)},
+      {"ggx", Rgb(1.202604508, 1.093712765, 0.9902778618)},
       {"ward grid", Rgb(1.074115552, 0.9856697051, 0.8906530455)}};
   std::vector<Rgb> got{means(renderer.diffuse())};
   for (const AccuracySetting& s : accuracy_settings())

@@ -5,6 +5,7 @@
 
 #include <brdfnav/core/blinn_phong.h>
 #include <brdfnav/core/cook_torrance.h>
+#include <brdfnav/core/ggx.h>
 #include <brdfnav/core/he.h>
 #include <brdfnav/core/lafortune.h>
 #include <brdfnav/core/ward.h>
@@ -16,7 +17,7 @@
 namespace brdfnav {
 
 // Alternatives are in ModelId order (models.h).
-using Lobe = std::variant<BlinnPhong, Ward, CookTorrance, Lafortune, He>;
+using Lobe = std::variant<BlinnPhong, Ward, CookTorrance, Lafortune, He, Ggx>;
 
 // A lobe with a mirror (delta) term (He's), whose reflectance at wo is mirror_weight(wo).
 // Detected from the type, not registered: the closure samples it, the registry reports it and the

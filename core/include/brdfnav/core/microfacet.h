@@ -1,4 +1,4 @@
-// Microfacet math shared by the half-vector lobes (Blinn-Phong, Ward, Cook-Torrance, He).
+// Microfacet math shared by the half-vector lobes (Blinn-Phong, Ward, Cook-Torrance, He, GGX).
 #pragma once
 
 #include <brdfnav/core/math.h>
@@ -51,6 +51,43 @@ inline Vec3 sample_beckmann(const Vec2& u, double m) {
   const double cos_h = 1.0 / std::sqrt(1.0 + tan2);
   const double sin_h = safe_sqrt(1.0 - cos_h * cos_h);
   return spherical_direction(sin_h, cos_h, 2 * kPi * u[1]);
+}
+
+// Anisotropic Trowbridge-Reitz (GGX) distribution, normalised so that integral D cos_h dw_h = 1,
+// with roughness alpha_x along x and alpha_y along y:
+//   D(h) = 1 / (pi ax ay ((h.x / ax)^2 + (h.y / ay)^2 + h.z^2)^2)  for unit h.
+// Scale-free form: `h` need not be unit (the caller's H = wi + wo), its squared length is len2.
+inline double ggx_d(const Vec3& h, double len2, double alpha_x, double alpha_y) {
+  const double x = h.x() / alpha_x, y = h.y() / alpha_y;
+  const double q = (x * x + y * y + h.z() * h.z()) / len2;
+  return 1.0 / (kPi * alpha_x * alpha_y * q * q);
+}
+
+// Smith's masking function of the GGX distribution for a unit direction w above the horizon,
+// G1 = 1 / (1 + Lambda) = 2 w.z / (w.z + sqrt(w.z^2 + ax^2 w.x^2 + ay^2 w.y^2)); 0 at and below
+// the horizon.
+inline double ggx_g1(const Vec3& w, double alpha_x, double alpha_y) {
+  if (w.z() <= 0) return 0.0;
+  const double x = alpha_x * w.x(), y = alpha_y * w.y(), z = w.z();
+  return 2 * z / (z + std::sqrt(z * z + x * x + y * y));
+}
+
+// Samples a GGX normal h from the distribution of normals visible from wo (wo.z > 0), whose
+// density is G1(wo) max(0, wo.h) D(h) / wo.z (Heitz, "Sampling the GGX Distribution of Visible
+// Normals", JCGT 2018): wo is stretched to the hemisphere configuration, a point of the projected
+// hemisphere is drawn uniformly, lifted onto it and unstretched.
+inline Vec3 sample_ggx_visible_normal(const Vec3& wo, double alpha_x, double alpha_y,
+                                      const Vec2& u) {
+  const Vec3 v = Vec3(alpha_x * wo.x(), alpha_y * wo.y(), wo.z()).normalized();
+  const double len2 = v.x() * v.x() + v.y() * v.y();
+  const Vec3 t1 = len2 > 0 ? Vec3(-v.y(), v.x(), 0) / std::sqrt(len2) : Vec3(1, 0, 0);
+  const Vec3 t2 = v.cross(t1);
+  const double r = std::sqrt(u[0]), phi = 2 * kPi * u[1];
+  const double p1 = r * std::cos(phi);
+  const double s = 0.5 * (1 + v.z());
+  const double p2 = (1 - s) * safe_sqrt(1 - p1 * p1) + s * r * std::sin(phi);
+  const Vec3 n = p1 * t1 + p2 * t2 + safe_sqrt(1 - p1 * p1 - p2 * p2) * v;
+  return Vec3(alpha_x * n.x(), alpha_y * n.y(), std::max(0.0, n.z())).normalized();
 }
 
 // Schlick's approximation of Fresnel reflectance.

@@ -9,15 +9,18 @@
 namespace brdfnav {
 
 // Order matches the alternatives of Lobe.
-enum class ModelId : int { blinn_phong = 0, ward, cook_torrance, lafortune, he };
+enum class ModelId : int { blinn_phong = 0, ward, cook_torrance, lafortune, he, ggx };
 inline constexpr int kModelCount = static_cast<int>(std::variant_size_v<Lobe>);
 
 struct ModelInfo {
   ModelId id;
-  std::string_view name;   // canonical name: blinn_phong, ward, cook_torrance, lafortune, he
+  std::string_view name;   // canonical name: blinn_phong, ward, cook_torrance, lafortune, he, ggx
   std::string_view title;  // for people
   std::span<const ParamSpec> params;
   bool has_mirror;  // has a delta (mirror) term
+  // The lobe's formula in a sentence or two of Markdown when the reference sheet has none
+  // (L::kFormula), else empty.
+  std::string_view formula;
 };
 
 std::span<const ModelInfo> models();

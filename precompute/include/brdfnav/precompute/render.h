@@ -88,6 +88,10 @@ class Renderer {
   std::vector<Image> ward_grid(std::span<const double> alpha_x, std::span<const double> alpha_y);
   // rho_d * diffuse() + rho_s * specular(lobe); validates the material (MaterialError).
   Image render(const Material& material);
+  // A GGX lobe with MaterialX's terms instead of Cycles' (precompute/src/materialx_ggx.h),
+  // integrated in the lobe's own windows: the part of a MaterialX renderer's image that rho_s
+  // scales (`compensation` false) or that rho_s^2 scales (true). docs/HOSTS.md, MaterialX.
+  Image materialx_ggx(const Ggx& lobe, bool compensation);
 
  private:
   struct Impl;
