@@ -277,6 +277,10 @@ TEST(Navigator, ColoursAtTheEdgeOfTheirRangeAreClamped) {
 // example asks for this Ward material at 0.03: every lobe and colour direction has room to move.
 TEST(Navigator, TheStartAndTheReadmesMaterialHaveRoomInEveryDirection) {
   const Navigator& nav = navigator();
+  // The smoke profile (the sanitized trees' database) has 2 to 4 nodes per axis: a step of 0.03
+  // leaves its grids.
+  if (nav.database().manifest().profile == "smoke")
+    GTEST_SKIP() << "the smoke profile's grids are too coarse for a radius of 0.03";
   for (const Material& m :
        {nav.start_material(),
         parse_material_spec("ward:alpha_x=0.05,alpha_y=0.05,rho_d=0.2,rho_s=0.3")}) {
