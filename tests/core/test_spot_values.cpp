@@ -171,7 +171,8 @@ TEST(SpotLafortune, PhongPointIsACosineLobeAroundTheMirror) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int i = 0; i < 200; ++i) {
-    const Vec3 wi = dir(90 * u(rng), 360 * u(rng)), wo = dir(90 * u(rng), 360 * u(rng));
+    const double ti = u(rng), pi = u(rng), to = u(rng), po = u(rng);  // drawn in this order
+    const Vec3 wi = dir(90 * ti, 360 * pi), wo = dir(90 * to, 360 * po);
     const Vec3 mirror(-wo.x(), -wo.y(), wo.z());
     const double phong = (20 + 2) / (2 * kPi) * std::pow(std::max(0.0, wi.dot(mirror)), 20);
     expect_grey(lobe.eval(wi, wo), phong);

@@ -102,7 +102,8 @@ Material random_material(ModelId id, std::mt19937_64& rng) {
 // Random directions, some below the horizon, of random length (the ABI normalises).
 void random_direction(std::mt19937_64& rng, double w[3]) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Vec3 v(u(rng), u(rng), u(rng) * 0.6 + 0.4);
+  const double x = u(rng), y = u(rng), z = u(rng);  // in this order under every compiler
+  Vec3 v(x, y, z * 0.6 + 0.4);
   v *= 0.5 + 1.25 * (u(rng) + 1);
   for (int k = 0; k < 3; ++k) w[k] = v[k];
 }

@@ -89,8 +89,10 @@ TEST(Embedding, InterpolatesBetweenNodes) {
   std::vector<double> errors;
   for (int i = 0; i < 8; ++i) {
     const auto m = [&] {
-      return material(ModelId::ward, {std::exp(alpha(rng)), std::exp(alpha(rng))},
-                      Rgb(rho(rng), rho(rng), rho(rng)), Rgb(rho(rng), rho(rng), rho(rng)));
+      // Braced lists draw in order; a function's arguments would not (clang and gcc differ).
+      const std::vector<double> alphas{std::exp(alpha(rng)), std::exp(alpha(rng))};
+      const Rgb rho_d{rho(rng), rho(rng), rho(rng)}, rho_s{rho(rng), rho(rng), rho(rng)};
+      return material(ModelId::ward, alphas, rho_d, rho_s);
     };
     const Material a = m(), b = m();
     const double exact = image_distance(f.renderer.render(a), f.renderer.render(b));

@@ -56,7 +56,8 @@ Cells sampled_cells(const std::vector<Vec2>& p, std::mt19937_64& rng) {
     cells.insert({static_cast<int>(std::floor(q.y())), static_cast<int>(std::floor(q.x()))});
   };
   for (int i = 0; i < 200000; ++i) {
-    const Vec2 q(lo.x() + u(rng) * (hi.x() - lo.x()), lo.y() + u(rng) * (hi.y() - lo.y()));
+    const double ux = u(rng), uy = u(rng);  // in this order under every compiler
+    const Vec2 q(lo.x() + ux * (hi.x() - lo.x()), lo.y() + uy * (hi.y() - lo.y()));
     if (inside(p, q)) add(q);
   }
   for (std::size_t k = 0; k + 1 < p.size(); ++k)
@@ -86,7 +87,8 @@ TEST(WindowRows, EveryCellMeetingARandomPolygonIsCovered) {
   std::uniform_real_distribution<double> u(0, 1);
   for (int trial = 0; trial < 20; ++trial) {
     // Star-shaped around a centre, hence simple; columns past the width on purpose.
-    const Vec2 centre(240 + 20 * u(rng), 30 + 60 * u(rng));
+    const double ux = u(rng), uy = u(rng);
+    const Vec2 centre(240 + 20 * ux, 30 + 60 * uy);
     std::vector<Vec2> p;
     const int n = 5 + trial;
     for (int k = 0; k < n; ++k) {
@@ -110,7 +112,8 @@ TEST(WindowRows, TheConvexScanGivesTheSameRowsOnConvexPolygons) {
   std::uniform_real_distribution<double> u(0, 1);
   for (int trial = 0; trial < 50; ++trial) {
     // Ellipses as the quadrature outlines them, columns past the width on some.
-    const Vec2 centre(200 + 100 * u(rng), 20 + 80 * u(rng));
+    const double ux = u(rng), uy = u(rng);
+    const Vec2 centre(200 + 100 * ux, 20 + 80 * uy);
     const double a = 0.5 + 30 * u(rng), b = 0.5 + 10 * u(rng), turn = kPi * u(rng);
     std::vector<Vec2> p;
     for (int k = 0; k < 32; ++k) {
