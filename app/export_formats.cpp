@@ -138,7 +138,7 @@ nlohmann::ordered_json material_json(const Material& m) {
 }
 
 RendererExport make_renderer_export(const Navigator& navigator, const Material& chosen,
-                                    int resolution) {
+                                    ExportFormat format, int resolution) {
   validate(chosen);
   require_render_colorspace(chosen);
   RendererExport e;
@@ -162,6 +162,8 @@ RendererExport make_renderer_export(const Navigator& navigator, const Material& 
   e.resolution = resolution > 0 ? resolution : manifest.resolution;
   e.environment = manifest.env_path;
   e.scene = manifest.scene;
+  // A ggx material for Cycles, whose GGX it is: nothing to measure.
+  if (chosen.model == ModelId::ggx && format != ExportFormat::materialx) return e;
   const EnvMap env = EnvMap::load(manifest.env_path, {}, [](const std::string&) {});
   if (env.pixel_hash() != manifest.env_hash)
     throw std::runtime_error(manifest.env_path +
@@ -171,6 +173,7 @@ RendererExport make_renderer_export(const Navigator& navigator, const Material& 
   Renderer renderer(env, scene, e.resolution);
   const Image ggx = renderer.render(e.ggx);
   if (chosen.model != ModelId::ggx) e.residual = image_distance(renderer.render(chosen), ggx);
+  if (format != ExportFormat::materialx) return e;
   const Ggx lobe = std::get<Ggx>(make_lobe(ModelId::ggx, e.ggx.params));
   // MaterialX's image: rho_d I_diffuse + rho_s I_plain + rho_s^2 I_compensation.
   Image materialx =
@@ -271,7 +274,7 @@ std::string cycles_document(const RendererExport& e) {
 std::string export_document(const Navigator& navigator, const Material& chosen, ExportFormat format,
                             int resolution) {
   if (format == ExportFormat::yaml) return export_to_yaml(navigator, chosen);
-  const RendererExport e = make_renderer_export(navigator, chosen, resolution);
+  const RendererExport e = make_renderer_export(navigator, chosen, format, resolution);
   return format == ExportFormat::materialx ? materialx_document(e) : cycles_document(e);
 }
 
