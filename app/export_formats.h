@@ -37,7 +37,7 @@ struct RendererExport {
   // scene, as the image metric (cube-root RMS):
   int resolution = 0;
   std::string environment, scene;
-  double residual = 0;           // chosen against ggx (0 when chosen is ggx)
+  double residual = 0;  // chosen against ggx (0 when chosen is ggx)
   // ... for the MaterialX document only (else 0):
   double materialx_masking = 0;  // ggx against ggx with MaterialX's masking-shadowing alone
   double materialx = 0;          // ggx against ggx with all of MaterialX's terms
