@@ -1,6 +1,7 @@
 // `brdfnav bench render`: the pre-renderer's speed and accuracy (issue #3) on this machine, as
 // the Markdown table bench/RESULTS.md records; `brdfnav bench navigator`: the neighbour service;
 // `brdfnav bench fits`: the conversion fits; `brdfnav bench load`: concurrent queries.
+#include "bench_fidelity.h"
 #include "bench_load.h"
 #include "bench_navigator.h"
 #include "commands.h"
@@ -236,6 +237,18 @@ void add_bench_commands(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(1, 65536));
   nav->callback([n] { run_navigator_bench(*n); });
+
+  auto* fidelity = bench->add_subcommand(
+      "fidelity", "Thumbnails and steps of every tab against exact renders, per model");
+  auto f = std::make_shared<FidelityBenchOptions>();
+  fidelity->add_option("--db", f->db, "Database directory")->required();
+  fidelity->add_option("--radius", f->radius, "Radius eps")
+      ->capture_default_str()
+      ->check(radius_validator());
+  fidelity->add_option("--materials", f->materials, "Random materials per model")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  fidelity->callback([f] { run_fidelity_bench(*f); });
 
   auto* load = bench->add_subcommand(
       "load", "Threads querying one database: queries/s, answers vs serial, resident memory");

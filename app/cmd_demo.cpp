@@ -10,9 +10,11 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <string_view>
 
 namespace brdfnav::cli {
 
@@ -99,27 +101,48 @@ void print_albedo_table(const std::filesystem::path& dir) {
   write_file_atomic(dir / "albedo.csv", csv.str());
 }
 
-// Every setting rendered on the sphere under the environment, in one labelled sheet (sRGB).
+// A setting's label in two lines, the model and its parameters ("Blinn-Phong", "n=2000").
+std::array<std::string, 2> label_lines(std::string_view label) {
+  const std::size_t space = label.find(' ');
+  if (space == std::string_view::npos) return {std::string(label), ""};
+  return {std::string(label.substr(0, space)), std::string(label.substr(space + 1))};
+}
+
+// Every setting rendered on the sphere under the environment, in one labelled sheet (sRGB): a
+// grid of cells as wide as the widest label line, each label centred under its sphere, with a
+// margin around and between cells so that no label runs into its neighbour or off the sheet.
 void write_sphere_sheet(const std::filesystem::path& dir, const SceneOptions& scene_options) {
   namespace IBA = OIIO::ImageBufAlgo;
   const EnvMap env = load_env(scene_options);
   const Scene scene = load_scene(scene_options);
   Renderer renderer(env, scene, scene_options.resolution);
-  const int res = scene_options.resolution, label = 22, columns = 6;
+  const int res = scene_options.resolution, columns = 6, gap = 12, font = 13;
+  const int line = font + font / 3, label_h = 6 + 2 * line;
+  const char* font_name = "DejaVuSans";
+  int cell_w = res;
+  for (const auto& setting : kSettings)
+    for (const std::string& text : label_lines(setting.label))
+      cell_w = std::max(cell_w, IBA::text_size(text, font, font_name).width());
   const int rows = static_cast<int>((std::size(kSettings) + columns - 1) / columns);
-  OIIO::ImageBuf sheet(
-      OIIO::ImageSpec(columns * res, rows * (res + label), 3, OIIO::TypeDesc::FLOAT));
+  OIIO::ImageBuf sheet(OIIO::ImageSpec(columns * cell_w + (columns + 1) * gap,
+                                       rows * (res + label_h) + (rows + 1) * gap, 3,
+                                       OIIO::TypeDesc::FLOAT));
   IBA::fill(sheet, {0.18f, 0.18f, 0.18f});
+  const float white[] = {1.f, 1.f, 1.f};
   for (std::size_t k = 0; k < std::size(kSettings); ++k) {
     Material m = parse_material_spec(kSettings[k].spec);
     m.rho_d = Rgb::Constant(0.05), m.rho_s = Rgb::Constant(0.5);
     const Image img = renderer.render(m);
     OIIO::ImageBuf tile(OIIO::ImageSpec(res, res, 4, OIIO::TypeDesc::FLOAT));
     tile.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, img.rgba.data());
-    const int x = int(k % columns) * res, y = int(k / columns) * (res + label);
-    IBA::paste(sheet, x, y, 0, 0, IBA::colorconvert(tile, "linear", "sRGB"),
+    const int x = gap + int(k % columns) * (cell_w + gap);
+    const int y = gap + int(k / columns) * (res + label_h + gap);
+    IBA::paste(sheet, x + (cell_w - res) / 2, y, 0, 0, IBA::colorconvert(tile, "linear", "sRGB"),
                OIIO::ROI(0, res, 0, res, 0, 1, 0, 3));
-    IBA::render_text(sheet, x + 4, y + res + 16, kSettings[k].label, 12, "DejaVuSans");
+    const auto lines = label_lines(kSettings[k].label);
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      IBA::render_text(sheet, x + cell_w / 2, y + res + 6 + font + int(i) * line, lines[i], font,
+                       font_name, white, IBA::TextAlignX::Center);
     std::fprintf(stderr, "rendered %s\n", kSettings[k].label);
   }
   sheet.set_write_format(OIIO::TypeDesc::UINT8);

@@ -116,40 +116,6 @@ void add_neighbors_command(CLI::App& app) {
   });
 }
 
-// The label of the opposite direction: "x+" <-> "x-", "ab+<a>" <-> "ab+<a + 180>"; "" for labels
-// without one (the models and gallery tabs).
-std::string opposite(const std::string& label) {
-  if (label.rfind("ab+", 0) == 0)
-    return "ab+" + std::to_string((std::stoi(label.substr(3)) + 180) % 360);
-  if (label.empty() || (label.back() != '+' && label.back() != '-')) return "";
-  return label.substr(0, label.size() - 1) + (label.back() == '+' ? '-' : '+');
-}
-
-// Orders a tab's neighbours for the sheet's ring: one of each opposite pair, then the others in
-// the same order, then those without a pair, so that each pair sits on one line through the
-// current material (contact_sheet.h).
-std::vector<Neighbor> ring_order(const std::vector<Neighbor>& neighbors) {
-  std::vector<Neighbor> first, second, single;
-  std::vector<bool> placed(neighbors.size(), false);
-  for (std::size_t i = 0; i < neighbors.size(); ++i) {
-    if (placed[i]) continue;
-    placed[i] = true;
-    const std::string other = opposite(neighbors[i].label);
-    auto j = std::find_if(neighbors.begin(), neighbors.end(),
-                          [&](const Neighbor& n) { return !other.empty() && n.label == other; });
-    if (j == neighbors.end() || placed[j - neighbors.begin()]) {
-      single.push_back(neighbors[i]);
-      continue;
-    }
-    placed[j - neighbors.begin()] = true;
-    first.push_back(neighbors[i]);
-    second.push_back(*j);
-  }
-  first.insert(first.end(), second.begin(), second.end());
-  first.insert(first.end(), single.begin(), single.end());
-  return first;
-}
-
 ocio::SheetTile tile(const Thumbnails& thumbnails, const ocio::ColorPipeline& pipeline,
                      const std::string& display, const std::string& view, const Material& m,
                      std::vector<std::string> label) {
@@ -193,12 +159,14 @@ void add_variations_command(CLI::App& app) {
     const Thumbnails thumbnails(navigator.database(), *size);
     const Tab t = *find_tab(*tab);
     std::vector<ocio::SheetTile> tiles;
-    for (const Neighbor& n : ring_order(navigator.neighbors(current, *radius, t))) {
+    // The navigator gives the offers in ring order (opposites face each other on the sheet).
+    for (const Neighbor& n : navigator.neighbors(current, *radius, t)) {
       char distance[32];
       std::snprintf(distance, sizeof distance, "d=%.4f", n.distance);
-      std::vector<std::string> label{n.label, distance};
-      if (n.at_boundary) label.emplace_back("at_boundary");
-      if (n.clamped) label.emplace_back("clamped");
+      std::vector<std::string> label{n.words, distance};
+      if (n.at_boundary) label.emplace_back("at the range's end");
+      if (n.clamped) label.emplace_back("colour clamped");
+      if (n.beyond_radius) label.emplace_back("beyond the radius");
       tiles.push_back(tile(thumbnails, pipeline, d, v, n.material, std::move(label)));
     }
     ocio::SheetOptions options;

@@ -101,7 +101,8 @@ void add_precompute_commands(CLI::App& app) {
 
   auto* info = app.add_subcommand("db-info", "Verify a database and print what it holds");
   auto dir = std::make_shared<std::string>();
-  info->add_option("dir", *dir, "Database directory")->required();
+  // --db as every other command; the directory alone, as before, still works.
+  info->add_option("--db,dir", *dir, "Database directory (brdfnav precompute)")->required();
   info->callback([=] { print_info(Database::open(*dir)); });
 }
 

@@ -55,9 +55,13 @@ void add_render_commands(CLI::App& app) {
     const Material m = load_material(*material);
     const EnvMap env = load_env(*scene);
     const Scene geometry = load_scene(*scene);
-    RenderOptions options;
-    options.progress = stderr_progress("render");
-    Renderer renderer(env, geometry, scene->resolution, options);
+    // Two passes, each with its own progress: the diffuse image, then the material's lobe (whose
+    // first pass may filter the map around the mirror directions, with no progress of its own).
+    Renderer renderer(env, geometry, scene->resolution, {});
+    renderer.set_progress(stderr_progress("render: diffuse pass"));
+    renderer.diffuse();
+    renderer.set_progress(
+        stderr_progress("render: " + std::string(model_info(m.model).name) + " lobe pass"));
     write_exr(renderer.render(m), *out, render_metadata(renderer, &m));
   });
 

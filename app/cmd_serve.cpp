@@ -31,7 +31,13 @@ struct ServeOptions {
   int resolution = 128;
 };
 
-void reply(httplib::Response& res, const ApiResponse& answer) {
+// Every answer goes out through here; a failure is logged with its message as the API wrote it
+// (httplib compresses the body after the handler for a client that accepts gzip or br, so the
+// logger would see compressed bytes).
+void reply(const httplib::Request& req, httplib::Response& res, const ApiResponse& answer) {
+  if (answer.status >= 400)
+    std::fprintf(stderr, "brdfnav: serve: %s %s -> %d %s\n", req.method.c_str(), req.path.c_str(),
+                 answer.status, answer.body.c_str());
   res.status = answer.status;
   res.set_content(answer.body, answer.content_type.c_str());
   for (const auto& [name, value] : answer.headers) res.set_header(name.c_str(), value);
@@ -46,7 +52,7 @@ const WebAsset* find_asset(const std::string& path) {
 
 void add_routes(httplib::Server& server, const NavigatorApi& api) {
   const auto handle = [&api](const httplib::Request& req, httplib::Response& res) {
-    reply(res, api.handle({req.method, req.path, req.params, req.body}));
+    reply(req, res, api.handle({req.method, req.path, req.params, req.body}));
   };
   // Every POST and every request under /api/ is the API's (which refuses the methods a path
   // does not take with 405); other GETs are the page's files.
@@ -81,29 +87,24 @@ std::string refusal(const httplib::Request& req, int status) {
 void add_error_handling(httplib::Server& server) {
   server.set_payload_max_length(kDrainedBodyBytes);
   using Handled = httplib::Server::HandlerResponse;
-  server.set_error_handler(
-      httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
-        if (!res.body.empty()) return Handled::Unhandled;  // an API answer
-        // httplib refuses a body over the limit with 413; the API reports every bad request as
-        // 400 naming the field.
-        reply(res, error_response(res.status == 413 ? 400 : res.status, refusal(req, res.status)));
-        return Handled::Handled;
-      }));
+  server.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request& req,
+                                                                   httplib::Response& res) {
+    if (!res.body.empty()) return Handled::Unhandled;  // an API answer
+    // httplib refuses a body over the limit with 413; the API reports every bad request as
+    // 400 naming the field.
+    reply(req, res, error_response(res.status == 413 ? 400 : res.status, refusal(req, res.status)));
+    return Handled::Handled;
+  }));
   server.set_exception_handler(
-      [](const httplib::Request&, httplib::Response& res, std::exception_ptr error) {
+      [](const httplib::Request& req, httplib::Response& res, std::exception_ptr error) {
         try {
           std::rethrow_exception(error);
         } catch (const std::exception& e) {
-          reply(res, error_response(500, e.what()));
+          reply(req, res, error_response(500, e.what()));
         } catch (...) {
-          reply(res, error_response(500, "unknown error"));
+          reply(req, res, error_response(500, "unknown error"));
         }
       });
-  server.set_logger([](const httplib::Request& req, const httplib::Response& res) {
-    if (res.status >= 400)
-      std::fprintf(stderr, "brdfnav: serve: %s %s -> %d %s\n", req.method.c_str(), req.path.c_str(),
-                   res.status, res.body.c_str());
-  });
   // The page loads nothing but its own files and the thumbnails it fetches.
   server.set_default_headers(
       {{"Content-Security-Policy", "default-src 'self'; img-src 'self' blob:; object-src 'none'"},

@@ -22,10 +22,20 @@ namespace fs = std::filesystem;
 
 const std::string kStudioLights = "/usr/share/blender/datafiles/studiolights/world/";
 
+// Blender's eight studio lights: by default every one is compared with the reference (itself
+// left out), so that the report gives Figure 3's full matrix and the most representative map.
+std::vector<std::string> studio_lights() {
+  std::vector<std::string> paths;
+  for (const char* name :
+       {"interior", "forest", "courtyard", "city", "night", "studio", "sunrise", "sunset"})
+    paths.push_back(kStudioLights + name + ".exr");
+  return paths;
+}
+
 struct ValidateOptions {
   std::string db;
   std::string reference = kDefaultEnvPath;  // without --db
-  std::vector<std::string> envs{kStudioLights + "forest.exr", kStudioLights + "courtyard.exr"};
+  std::vector<std::string> envs = studio_lights();
   int resolution = 128;
   int pairs = 50;
   int fit_samples = 20;
@@ -203,7 +213,8 @@ void add_validate_command(CLI::App& app) {
       ->capture_default_str()
       ->excludes(db);
   cmd->add_option("--env", o->envs,
-                  "Environment maps compared with the reference (comma-separated)")
+                  "Environment maps compared with the reference (comma-separated; the "
+                  "reference itself is left out)")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--res", o->resolution, "Image width and height in pixels")

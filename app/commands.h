@@ -4,11 +4,11 @@
 #include <CLI/CLI.hpp>
 
 #include <brdfnav/core/math.h>
+#include <brdfnav/precompute/env_map.h>
 
 #include <string>
 
 namespace brdfnav {
-class EnvMap;
 class Scene;
 }  // namespace brdfnav
 
@@ -25,7 +25,7 @@ void add_serve_command(CLI::App& app);        // serve
 
 // The options every command that renders shares: --env, --sanitize-env, --res, --scene.
 struct SceneOptions {
-  std::string env = "/usr/share/blender/datafiles/studiolights/world/interior.exr";
+  std::string env = kDefaultEnvPath;
   bool sanitize_env = false;
   int resolution = 320;
   std::string scene = "sphere";

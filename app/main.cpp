@@ -1,9 +1,57 @@
-// brdfnav: the command-line front end. Every failure prints one line naming what is wrong and
-// exits non-zero; commands that write files write them atomically.
+// brdfnav: the command-line front end. Every failure prints one line "brdfnav: error: ..." naming
+// what is wrong and exits non-zero: 2 for a command line that does not parse, 1 for a command
+// that fails. Commands that write files write them atomically.
 #include "commands.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace {
+
+// Edit distance between two command names, for a suggestion.
+std::size_t distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// "unknown command 'X'" with the nearest command and the list, when the first argument names no
+// command; empty when it does (or is an option).
+std::string unknown_command(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return "";
+  const std::string given = argv[1];
+  std::string names, nearest;
+  std::size_t best = 3;  // suggest within two edits
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (sub->get_name() == given) return "";
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+    if (const std::size_t d = distance(given, sub->get_name()); d < best)
+      best = d, nearest = sub->get_name();
+  }
+  return "unknown command '" + given + "'" +
+         (nearest.empty() ? "" : " (did you mean '" + nearest + "'?)") + "; commands: " + names;
+}
+
+int usage_error(const std::string& message) {
+  std::fprintf(stderr, "brdfnav: error: %s\nRun 'brdfnav --help' or 'brdfnav COMMAND --help'.\n",
+               message.c_str());
+  return 2;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"brdfnav: image-driven navigation of analytic BRDF models", "brdfnav"};
@@ -17,10 +65,14 @@ int main(int argc, char** argv) {
   brdfnav::cli::add_bench_commands(app);
   brdfnav::cli::add_validate_command(app);
   brdfnav::cli::add_serve_command(app);
+  if (const std::string unknown = unknown_command(app, argc, argv); !unknown.empty())
+    return usage_error(unknown);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --help-all
+    if (argc < 2) return usage_error("a command is required (brdfnav --help lists them)");
+    return usage_error(e.what());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "brdfnav: error: %s\n", e.what());
     return 1;

@@ -2,6 +2,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -9,24 +11,44 @@ namespace brdfnav::cli {
 
 namespace {
 
-// The goals of issue #7 and the paper's claim for Figure 3.
-constexpr double kGoalR2 = 0.95;
-constexpr double kPaperWithin = 0.85;
+// The paper's claim for Figure 2, under every map: the cube-root metric and CIELAB agree (their
+// R^2 within kPerceptualSame of each other) and both are clearly straighter than RGB L2 and the
+// BRDF-space metric (their R^2 higher by at least kClearMargin). The margin is 2.5 times the
+// difference that counts as the same, so that "clearly straighter" is never within the noise of
+// "the same". (Issue #7's goal R^2(cube root) >= 0.95 is retired: the map's dynamic range sets
+// R^2, 0.863 to 0.945 over Blender's maps; docs/VALIDATION.md.)
+constexpr double kPerceptualSame = 0.02;
+constexpr double kClearMargin = 0.05;
+// The paper's claim for Figure 3.
+constexpr double kPaperWithin = kAgreeingWithin;
+// The default map's goal (docs/VALIDATION.md, "Choosing the default map"): agreeing with at
+// least 5 of the other maps (of Blender's 7).
+constexpr std::size_t kGoalAgreeing = 5;
 
-bool fig2_goal(const PellaciniStudy& s) {
+bool fig2_claim(const PellaciniStudy& s) {
   // curves: cube_root, cielab, rgb, brdf_l2.
-  return s.curves[0].fit.r2 >= kGoalR2 && s.curves[0].fit.r2 > s.curves[2].fit.r2;
+  const double cube_root = s.curves[0].fit.r2, cielab = s.curves[1].fit.r2;
+  const double baseline = std::max(s.curves[2].fit.r2, s.curves[3].fit.r2);
+  return std::abs(cube_root - cielab) <= kPerceptualSame &&
+         std::min(cube_root, cielab) >= baseline + kClearMargin;
+}
+
+// Whether the claim holds under the reference and every other map.
+bool fig2_claim_everywhere(const ValidationResults& r) {
+  return fig2_claim(r.fig2) &&
+         std::all_of(r.fig2_others.begin(), r.fig2_others.end(),
+                     [](const NamedPellacini& o) { return fig2_claim(o.study); });
 }
 
 // Whether every other natural map (entries 1 .. others) agrees with the reference as the paper's.
 bool fig3_claim(const SceneStudy& s, std::size_t others) {
   for (std::size_t i = 1; i <= others; ++i)
-    if (s.entries[i].agreement.within <= kPaperWithin) return false;
+    if (s.entries[i].agreement.within < kPaperWithin) return false;
   return true;
 }
 
 // The ordered pairs of natural maps (entries 0 .. others, the reference included) and how many of
-// them agree as the paper's maps do (over kPaperWithin).
+// them agree as the paper's maps do (at least kPaperWithin).
 struct PairCount {
   std::size_t agreeing = 0, pairs = 0;
 };
@@ -36,9 +58,17 @@ PairCount natural_pairs(const SceneStudy& s, std::size_t others) {
     for (std::size_t j = 0; j <= others; ++j)
       if (i != j) {
         ++c.pairs;
-        if (s.within(Eigen::Index(i), Eigen::Index(j)) > kPaperWithin) ++c.agreeing;
+        if (s.within(Eigen::Index(i), Eigen::Index(j)) >= kPaperWithin) ++c.agreeing;
       }
   return c;
+}
+
+// Figure 2's R^2 of the cube-root metric under each natural map, the reference first (the order
+// of Figure 3's entries).
+std::vector<double> cube_root_r2(const ValidationResults& r) {
+  std::vector<double> r2{r.fig2.curves[0].fit.r2};
+  for (const NamedPellacini& o : r.fig2_others) r2.push_back(o.study.curves[0].fit.r2);
+  return r2;
 }
 
 // --- report.yaml ---------------------------------------------------------------------------------
@@ -67,16 +97,21 @@ void emit_pellacini(YAML::Emitter& out, const PellaciniStudy& s) {
         << YAML::Value << c.fit.intercept << YAML::Key << "r2" << YAML::Value << c.fit.r2
         << YAML::Key << "last_step_ratio" << YAML::Value << last_step_ratio(c) << YAML::EndMap;
   }
-  out << YAML::EndMap << YAML::Key << "goal_holds" << YAML::Value << fig2_goal(s);
+  out << YAML::EndMap << YAML::Key << "claim_holds" << YAML::Value << fig2_claim(s);
   out << YAML::Key << "env_luminance" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key
       << "peak" << YAML::Value << s.env.peak << YAML::Key << "mean" << YAML::Value << s.env.mean
       << YAML::EndMap;
 }
 
-void emit_fig2(YAML::Emitter& out, const PellaciniStudy& s,
-               const std::vector<NamedPellacini>& others) {
+void emit_fig2(YAML::Emitter& out, const ValidationResults& r) {
+  const PellaciniStudy& s = r.fig2;
+  const std::vector<NamedPellacini>& others = r.fig2_others;
   out << YAML::Key << "figure2" << YAML::Value << YAML::BeginMap << YAML::Key << "d";
   seq(out << YAML::Value, s.d);
+  out << YAML::Key << "claim" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key
+      << "perceptual_same" << YAML::Value << kPerceptualSame << YAML::Key << "clear_margin"
+      << YAML::Value << kClearMargin << YAML::EndMap << YAML::Key << "claim_holds_everywhere"
+      << YAML::Value << fig2_claim_everywhere(r);
   emit_pellacini(out, s);
   out << YAML::Key << "other_envs" << YAML::Value << YAML::BeginMap;
   for (const NamedPellacini& o : others) {
@@ -87,7 +122,9 @@ void emit_fig2(YAML::Emitter& out, const PellaciniStudy& s,
   out << YAML::EndMap << YAML::EndMap;
 }
 
-void emit_fig3(YAML::Emitter& out, const SceneStudy& s, std::size_t others) {
+void emit_fig3(YAML::Emitter& out, const ValidationResults& r) {
+  const SceneStudy& s = r.fig3;
+  const std::size_t others = r.other_envs.size();
   out << YAML::Key << "figure3" << YAML::Value << YAML::BeginMap << YAML::Key << "alpha";
   seq(out << YAML::Value, s.alpha);
   out << YAML::Key << "reference_sample" << YAML::Value << s.reference_sample << YAML::Key
@@ -112,7 +149,22 @@ void emit_fig3(YAML::Emitter& out, const SceneStudy& s, std::size_t others) {
   const PairCount pairs = natural_pairs(s, others);
   out << YAML::EndSeq << YAML::Key << "natural_maps_agree" << YAML::Value << fig3_claim(s, others)
       << YAML::Key << "natural_pairs" << YAML::Value << pairs.pairs << YAML::Key
-      << "natural_pairs_agreeing" << YAML::Value << pairs.agreeing << YAML::EndMap;
+      << "natural_pairs_agreeing" << YAML::Value << pairs.agreeing;
+  // How representative each natural map is of the others, and the one the rule picks.
+  const std::vector<MapAgreement> maps = map_agreements(s.within, others + 1);
+  const std::vector<double> r2 = cube_root_r2(r);
+  out << YAML::Key << "agreement" << YAML::Value << YAML::BeginMap << YAML::Key << "threshold"
+      << YAML::Value << kAgreeingWithin << YAML::Key << "mean_tie" << YAML::Value
+      << kMeanAgreementTie << YAML::Key << "goal_agreeing" << YAML::Value << kGoalAgreeing
+      << YAML::Key << "maps" << YAML::Value << YAML::BeginMap;
+  for (std::size_t i = 0; i < maps.size(); ++i)
+    out << YAML::Key << s.entries[i].name << YAML::Value << YAML::Flow << YAML::BeginMap
+        << YAML::Key << "agreeing" << YAML::Value << maps[i].agreeing << YAML::Key << "others"
+        << YAML::Value << others << YAML::Key << "mean" << YAML::Value << maps[i].mean << YAML::Key
+        << "figure2_r2" << YAML::Value << r2[i] << YAML::EndMap;
+  out << YAML::EndMap << YAML::Key << "most_representative" << YAML::Value
+      << s.entries[most_representative(maps, r2)].name << YAML::Key << "reference_goal_holds"
+      << YAML::Value << (maps.front().agreeing >= kGoalAgreeing) << YAML::EndMap << YAML::EndMap;
 }
 
 void emit_spacing(YAML::Emitter& out, const char* figure, const char* parameter,
@@ -199,32 +251,66 @@ void md_fig2(std::ostringstream& md, const PellaciniStudy& s) {
   for (const CumulativeCurve& c : s.curves)
     md << "| " << c.metric << " | " << num(c.fit.r2, 4) << " | " << num(c.fit.slope, 4) << " | "
        << num(c.values.back(), 4) << " | " << num(last_step_ratio(c), 2) << " |\n";
-  md << "\nGoal R^2(cube_root) >= " << kGoalR2
-     << " and R^2(cube_root) > R^2(rgb): " << verdict(fig2_goal(s))
-     << ". The map's brightest texel is " << num(s.env.peak / s.env.mean, 0)
-     << " times its mean luminance.\n\n";
+  md << "\nThe paper's claim, that the cube-root metric and CIELAB agree (R^2 within "
+     << num(kPerceptualSame, 2) << ") and are both clearly straighter than RGB L2 and the "
+     << "BRDF-space metric (R^2 higher by at least " << num(kClearMargin, 2)
+     << "): " << verdict(fig2_claim(s)) << " under this map. Its brightest texel is "
+     << num(s.env.peak / s.env.mean, 0) << " times its mean luminance.\n\n";
 }
 
-// The same stimuli under every other map: R^2 of each image metric and the goal.
-void md_fig2_others(std::ostringstream& md, const std::string& reference, const PellaciniStudy& s,
-                    const std::vector<NamedPellacini>& others) {
+// The same stimuli under every other map: R^2 of each image metric and the paper's claim.
+void md_fig2_others(std::ostringstream& md, const ValidationResults& r) {
+  const std::string& reference = r.fig3.entries.front().name;
+  const PellaciniStudy& s = r.fig2;
+  const std::vector<NamedPellacini>& others = r.fig2_others;
   if (others.empty()) return;
   md << "The same stimuli under the other maps, with each map's brightest texel against its mean "
         "luminance (the brighter its small sources, the more the last, mirror-like step "
         "outweighs the others):\n\n"
-     << "| map | R^2 cube_root | R^2 cielab | R^2 rgb | last step / mean step (cube_root) | "
-        "peak / mean luminance | goal |\n|---|---|---|---|---|---|---|\n";
+     << "| map | R^2 cube_root | R^2 cielab | R^2 rgb | R^2 brdf_l2 | last step / mean step "
+        "(cube_root) | peak / mean luminance | the paper's claim |\n"
+        "|---|---|---|---|---|---|---|---|\n";
   const auto row = [&md](const std::string& name, const PellaciniStudy& p) {
     md << "| " << name << " | " << num(p.curves[0].fit.r2, 3) << " | " << num(p.curves[1].fit.r2, 3)
-       << " | " << num(p.curves[2].fit.r2, 3) << " | " << num(last_step_ratio(p.curves[0]), 2)
-       << " | " << num(p.env.peak / p.env.mean, 0) << " | " << verdict(fig2_goal(p)) << " |\n";
+       << " | " << num(p.curves[2].fit.r2, 3) << " | " << num(p.curves[3].fit.r2, 3) << " | "
+       << num(last_step_ratio(p.curves[0]), 2) << " | " << num(p.env.peak / p.env.mean, 0) << " | "
+       << verdict(fig2_claim(p)) << " |\n";
   };
   row(reference + " (reference)", s);
   for (const NamedPellacini& o : others) row(o.env, o.study);
-  md << "\n";
+  std::size_t holding = fig2_claim(s);
+  for (const NamedPellacini& o : others) holding += fig2_claim(o.study);
+  md << "\nThe paper's claim under every map: " << verdict(fig2_claim_everywhere(r))
+     << " (it holds under " << holding << " of the " << others.size() + 1 << " maps).\n\n";
 }
 
-void md_fig3(std::ostringstream& md, const SceneStudy& s, std::size_t others) {
+// Each natural map's agreement with the others, both ways, and the most representative map.
+void md_representative(std::ostringstream& md, const ValidationResults& r) {
+  const SceneStudy& s = r.fig3;
+  const std::size_t others = r.other_envs.size();
+  const std::vector<MapAgreement> maps = map_agreements(s.within, others + 1);
+  const std::vector<double> r2 = cube_root_r2(r);
+  md << "Two maps agree when each one's distances agree with the other's on at least "
+     << num(100 * kAgreeingWithin, 0)
+     << "% of the pairs (both ways: the smaller of the two entries above). For each map, the "
+        "other maps it agrees with and its mean agreement (the mean of those smaller entries):\n\n"
+     << "| map | others agreeing | mean agreement | R^2 cube_root (Figure 2) "
+        "|\n|---|---|---|---|\n";
+  for (std::size_t i = 0; i < maps.size(); ++i)
+    md << "| " << s.entries[i].name << (i == 0 ? " (reference)" : "") << " | " << maps[i].agreeing
+       << " of " << others << " | " << num(100 * maps[i].mean, 1) << "% | " << num(r2[i], 3)
+       << " |\n";
+  md << "\nThe most representative map (the most others agreeing; then the highest mean "
+        "agreement, means within "
+     << num(100 * kMeanAgreementTie, 0)
+     << " point of the highest counting as equal; then Figure 2's R^2): **"
+     << s.entries[most_representative(maps, r2)].name << "**. The reference agrees with at least "
+     << kGoalAgreeing << " others: " << verdict(maps.front().agreeing >= kGoalAgreeing) << ".\n\n";
+}
+
+void md_fig3(std::ostringstream& md, const ValidationResults& r) {
+  const SceneStudy& s = r.fig3;
+  const std::size_t others = r.other_envs.size();
   md << "## Figure 3: dependence on the environment\n\n25 Ward samples alpha = "
      << num(s.alpha.front(), 2) << " .. " << num(s.alpha.back(), 2)
      << " (evenly spaced), all 600 ordered pairs; one least-squares scale per metric onto the "
@@ -234,7 +320,7 @@ void md_fig3(std::ostringstream& md, const SceneStudy& s, std::size_t others) {
   for (const SceneEntry& e : s.entries)
     md << "| " << e.name << " | " << num(e.agreement.scale, 4) << " | "
        << num(100 * e.agreement.within, 1) << "% |\n";
-  md << "\nThe paper: over " << num(100 * kPaperWithin, 0)
+  md << "\nThe paper: at least " << num(100 * kPaperWithin, 0)
      << "% for the other natural maps: " << verdict(fig3_claim(s, others))
      << ". The plot shows the distances from alpha = " << num(s.alpha[s.reference_sample], 4)
      << ".\n\n";
@@ -253,7 +339,8 @@ void md_fig3(std::ostringstream& md, const SceneStudy& s, std::size_t others) {
   }
   const PairCount pairs = natural_pairs(s, others);
   md << "\nOf the " << pairs.pairs << " ordered pairs of natural maps (the reference included), "
-     << pairs.agreeing << " agree over " << num(100 * kPaperWithin, 0) << "%.\n\n";
+     << pairs.agreeing << " agree on at least " << num(100 * kPaperWithin, 0) << "%.\n\n";
+  md_representative(md, r);
 }
 
 void md_spacing(std::ostringstream& md, const std::string& title, const char* parameter,
@@ -316,8 +403,8 @@ std::string report_yaml(const ValidationResults& r, const std::vector<ReportFile
       << YAML::Value << YAML::Flow << r.other_envs;
   if (!r.database.empty()) out << YAML::Key << "database" << YAML::Value << r.database;
   out << YAML::EndMap;
-  emit_fig2(out, r.fig2, r.fig2_others);
-  emit_fig3(out, r.fig3, r.other_envs.size());
+  emit_fig2(out, r);
+  emit_fig3(out, r);
   emit_spacing(out, "figure8", kFig8Parameter, r.fig8);
   emit_spacing(out, "figure9", kFig9Parameter, r.fig9);
   if (r.embedding) emit_embedding(out, *r.embedding);
@@ -339,9 +426,9 @@ std::string report_markdown(const ValidationResults& r, const std::vector<Report
   for (const std::string& env : r.other_envs) md << " `" << env << "`";
   md << " and a constant environment. Every number is in report.yaml.\n\n";
   md_fig2(md, r.fig2);
-  md_fig2_others(md, r.fig3.entries.front().name, r.fig2, r.fig2_others);
+  md_fig2_others(md, r);
   md << images(files, "figure2");
-  md_fig3(md, r.fig3, r.other_envs.size());
+  md_fig3(md, r);
   md << images(files, "figure3");
   md_spacing(md, "Figure 8: Ward, alpha", kFig8Parameter, r.fig8);
   md << images(files, "figure8");

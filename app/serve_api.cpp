@@ -167,11 +167,11 @@ json neighbor_json(const Neighbor& n) {
   json flags = json::array();
   if (n.at_boundary) flags.push_back("at_boundary");
   if (n.clamped) flags.push_back("clamped");
-  return {{"tab", tab_name(n.tab)},
-          {"label", n.label},
-          {"distance", n.distance},
-          {"flags", flags},
-          {"material", material_json(n.material)}};
+  if (n.beyond_radius) flags.push_back("beyond_radius");
+  return {{"tab", tab_name(n.tab)}, {"label", n.label},
+          {"words", n.words},       {"change", n.change},
+          {"opposite", n.opposite}, {"distance", n.distance},
+          {"flags", flags},         {"material", material_json(n.material)}};
 }
 
 json model_json(const ModelInfo& info, const ParamGrid& grid) {
@@ -273,7 +273,8 @@ ApiResponse error_response(int status, const std::string& message) {
 
 NavigatorApi::NavigatorApi(const ApiOptions& options)
     : navigator_(Navigator::open(options.db)),
-      thumbnails_(navigator_.database(), options.resolution) {}
+      thumbnails_(navigator_.database(), options.resolution),
+      exact_(navigator_.database(), thumbnails_.resolution()) {}
 
 ApiResponse NavigatorApi::handle(const ApiRequest& r) const {
   const auto route = std::find_if(std::begin(kRoutes), std::end(kRoutes),
@@ -300,12 +301,10 @@ ApiResponse NavigatorApi::info() const {
   return answer([&] {
     const Database& db = navigator_.database();
     json models = json::array();
-    std::optional<Material> start;
     for (const ModelInfo& m : brdfnav::models()) {
       const ModelEmbedding* embedding = db.embedding(m.id);
       if (!embedding) continue;
       models.push_back(model_json(m, embedding->grid()));
-      if (!start) start = default_material(m.id);
     }
     json tabs = json::array();
     for (Tab t : kTabs) tabs.push_back(tab_name(t));
@@ -318,7 +317,7 @@ ApiResponse NavigatorApi::info() const {
          {"displays", displays},
          {"colour_config", colour_.describe()},
          {"radius", {{"min", kRadiusMin}, {"max", kRadiusMax}, {"start", kRadiusStart}}},
-         {"start", material_json(*start)},
+         {"start", material_json(navigator_.start_material())},
          {"thumbnail_resolution", thumbnails_.resolution()},
          {"max_body_bytes", kMaxBodyBytes},
          {"database", database_json(db)}});
@@ -340,10 +339,16 @@ ApiResponse NavigatorApi::neighbors(std::string_view body) const {
 
 ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
   return answer([&] {
-    const json request = parse_body(body, {"material", "display", "view"});
+    const json request = parse_body(body, {"material", "display", "view", "preview"});
     const Material m = read_material(navigator_.database(), require(request, "material"));
     const auto [display, view] = read_display_view(colour_, request);
-    const Image image = thumbnails_.render(m);
+    const auto preview = request.find("preview");
+    if (preview != request.end() && !preview->is_boolean())
+      throw RequestError("preview", "expected true or false, got " + shown(*preview));
+    const bool quick = preview != request.end() && preview->get<bool>();
+    const std::shared_ptr<const Image> rendered =
+        quick ? std::make_shared<const Image>(thumbnails_.render(m)) : exact_.render(m);
+    const Image& image = *rendered;
     const std::vector<std::uint8_t> rgba =
         colour_.apply(image.rgba.data(), image.width, image.height, display, view);
     return ApiResponse{200, "image/png", encode_png(rgba, image.width, image.height)};

@@ -3,6 +3,8 @@
 // is a plain value: a status, a content type and a body.
 #pragma once
 
+#include "exact_thumbnails.h"
+
 #include <brdfnav/navigator/navigator.h>
 #include <brdfnav/navigator/thumbnails.h>
 #include <brdfnav/ocio/color_pipeline.h>
@@ -74,7 +76,9 @@ class NavigatorApi {
   // POST /api/neighbors {material, radius, tab[, k]} -> {neighbors: [{tab, label, distance,
   // flags, material}]}.
   ApiResponse neighbors(std::string_view body) const;
-  // POST /api/thumbnail {material[, display, view]} -> image/png.
+  // POST /api/thumbnail {material[, display, view, preview]} -> image/png: the exact render of
+  // the material (ExactThumbnails), or with preview: true the quick blend of the database's
+  // images (Thumbnails).
   ApiResponse thumbnail(std::string_view body) const;
   // POST /api/export {material[, format]} -> what `brdfnav export --format FORMAT` writes
   // (yaml, the default: application/yaml; materialx: application/xml; cycles:
@@ -89,6 +93,7 @@ class NavigatorApi {
  private:
   Navigator navigator_;
   Thumbnails thumbnails_;
+  ExactThumbnails exact_;
   ocio::ColorPipeline colour_;
 };
 

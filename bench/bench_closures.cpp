@@ -6,6 +6,7 @@
 #include <brdfnav/core/material.h>
 
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace brdfnav {
@@ -20,8 +21,10 @@ struct Inputs {
   std::vector<Vec2> u;
 };
 
-Closure default_closure(ModelId id) {
+// The model's default material, or with `params` in place of its default parameters.
+Closure default_closure(ModelId id, std::vector<double> params = {}) {
   Material m = default_material(id);
+  if (!params.empty()) m.params = std::move(params);
   m.rho_d = Rgb(0.2, 0.15, 0.1);
   m.rho_s = Rgb::Constant(0.5);
   return make_closure(m);
@@ -56,8 +59,8 @@ Inputs make_inputs(const Closure& closure) {
   return in;
 }
 
-void BM_Eval(benchmark::State& state, ModelId id) {
-  const Closure closure = default_closure(id);
+void BM_Eval(benchmark::State& state, ModelId id, std::vector<double> params = {}) {
+  const Closure closure = default_closure(id, std::move(params));
   const Inputs in = make_inputs(closure);
   std::size_t i = 0;
   for (auto _ : state) {
@@ -96,6 +99,11 @@ BRDFNAV_BENCH_MODEL(ward);
 BRDFNAV_BENCH_MODEL(cook_torrance);
 BRDFNAV_BENCH_MODEL(lafortune);
 BRDFNAV_BENCH_MODEL(he);
+// He's eval at the renderer's smooth, medium and rough settings (accuracy_settings()): g at the
+// mirror from below 1 (smooth, grazing) to about 1800 (rough, blue, normal incidence).
+BENCHMARK_CAPTURE(BM_Eval, he_smooth, ModelId::he, std::vector<double>{0.1, 10, 1.5});
+BENCHMARK_CAPTURE(BM_Eval, he_medium, ModelId::he, std::vector<double>{0.3, 8, 2});
+BENCHMARK_CAPTURE(BM_Eval, he_rough, ModelId::he, std::vector<double>{1.5, 4, 4});
 
 }  // namespace
 }  // namespace brdfnav

@@ -51,14 +51,16 @@ async function call(path, body, options = {}) {
 // to a variation already on screen, shows its image at once.
 const thumbnails = new Map();
 
-function thumbnail(material) {
-  const key = JSON.stringify([material, state.display, state.view]);
+// The PNG of a material's thumbnail: the exact render, or with `preview` the quick blend of the
+// database's images that stands in while the exact one renders.
+function thumbnail(material, preview = false) {
+  const key = JSON.stringify([material, state.display, state.view, preview]);
   let url = thumbnails.get(key);
   if (url) {
     thumbnails.delete(key);  // now the most recently used
     thumbnails.set(key, url);
   } else {
-    url = call('/api/thumbnail', { material, display: state.display, view: state.view })
+    url = call('/api/thumbnail', { material, display: state.display, view: state.view, preview })
       .then((r) => r.blob())
       .then((blob) => URL.createObjectURL(blob));
     url.catch(() => thumbnails.delete(key));
@@ -110,32 +112,6 @@ function modelInfo(name) {
   return state.info.models.find((m) => m.name === name);
 }
 
-// Variation i and i + n/2 face each other across the centre when each direction's opposite
-// ("n+" / "n-", "ab+45" / "ab+225") follows its partner by half the ring; labels without a
-// partner (other models, the gallery) keep the service's order.
-function opposite(label) {
-  const hue = /^ab\+(\d+)$/.exec(label);
-  if (hue) return `ab+${(Number(hue[1]) + 180) % 360}`;
-  if (label.endsWith('+')) return `${label.slice(0, -1)}-`;
-  if (label.endsWith('-')) return `${label.slice(0, -1)}+`;
-  return null;
-}
-
-function facingOrder(neighbors) {
-  const firsts = [];
-  const seconds = [];
-  const paired = new Set();
-  for (const n of neighbors) {
-    if (paired.has(n)) continue;
-    const partner = neighbors.find((m) => !paired.has(m) && m !== n && m.label === opposite(n.label));
-    if (!partner) return neighbors;
-    firsts.push(n);
-    seconds.push(partner);
-    paired.add(n).add(partner);
-  }
-  return firsts.concat(seconds);
-}
-
 // ---- drawing --------------------------------------------------------------------------------
 
 function drawReadout(material) {
@@ -159,57 +135,86 @@ function drawReadout(material) {
   }));
 }
 
-// "<title>", "d = 0.0300" and the flags, as elements (labels are data, never markup).
+// The flags in words (the API's names are for programs).
+const FLAG_WORDS = {
+  at_boundary: 'end of range',
+  clamped: 'colour at its limit',
+  beyond_radius: 'closest this model gets',
+};
+
+// The offer's words ("sharper", "towards red", "as Ward"), its distance and its flags, as
+// elements (labels are data, never markup).
 function caption(n) {
-  const title = n.tab === 'models' || n.tab === 'gallery' ? modelInfo(n.label).title : n.label;
   const span = document.createElement('span');
   span.className = 'caption';
   const name = document.createElement('b');
-  name.textContent = title;
+  name.textContent = n.words || n.label;
   const line = document.createElement('span');
   line.textContent = `d = ${n.distance.toFixed(4)}`;
   span.append(name, line);
   for (const flag of n.flags) {
     const badge = document.createElement('span');
     badge.className = 'flag';
-    badge.textContent = flag.replace('_', ' ');
+    badge.textContent = FLAG_WORDS[flag] ?? flag.replace('_', ' ');
     line.append(' ', badge);
   }
   return span;
 }
 
-// The cells around the border of a side x side grid, clockwise from the second cell of the
-// top row, so that cell p and cell p + count / 2 mirror each other through the centre.
-function ringCells(side) {
-  const last = side - 1;
-  const cells = [];
-  for (let c = 1; c <= last; c += 1) cells.push([0, c]);
-  for (let r = 1; r <= last; r += 1) cells.push([r, last]);
-  for (let c = last - 1; c >= 0; c -= 1) cells.push([last, c]);
-  for (let r = last - 1; r >= 0; r -= 1) cells.push([r, 0]);
-  return cells;
+// The ring's geometry in CSS pixels. A variation is a 176 x 216 box (its 160 px image, padding
+// and two caption lines) placed by its image's centre, 84 px below the box's top; the centre's
+// 256 px image and caption take -128..128 across and -128..162 down around the middle.
+const BOX = { width: 176, height: 216, above: 84 };
+const CENTRE = { left: -128, right: 128, top: -128, bottom: 162 };
+const MAX_RX = 408;  // a stage of 2 * 408 + 176 = 992 px fits a 1024 px window
+
+function ringBoxes(count, rx, ry) {
+  return Array.from({ length: count }, (_, i) => {
+    const angle = (2 * Math.PI * i) / count;
+    const x = Math.round(rx * Math.sin(angle));
+    const y = Math.round(-ry * Math.cos(angle));
+    return { x, y, left: x - BOX.width / 2, right: x + BOX.width / 2, top: y - BOX.above,
+      bottom: y - BOX.above + BOX.height };
+  });
 }
 
-// The variations on the ring of a grid around the centre (2 x 2 cells or more, as in the
-// contact sheets), spread evenly; facing pairs stay on opposite cells.
+const apart = (a, b, gap) => a.right + gap <= b.left || b.right + gap <= a.left ||
+  a.bottom + gap <= b.top || b.bottom + gap <= a.top;
+
+// The smallest circle (radius at most MAX_RX) on which `count` boxes at angles 2 pi i / count
+// touch neither the centre nor each other; past MAX_RX an ellipse taller than wide.
+function ringLayout(count) {
+  const fits = (rx, ry) => {
+    const boxes = ringBoxes(count, rx, ry);
+    return boxes.every((b, i) => apart(b, CENTRE, 12) &&
+      boxes.slice(0, i).every((o) => apart(b, o, 8)));
+  };
+  for (let r = 260; r <= MAX_RX; r += 4) if (fits(r, r)) return { rx: r, ry: r };
+  let ry = MAX_RX;
+  while (!fits(MAX_RX, ry) && ry < 2000) ry += 4;
+  return { rx: MAX_RX, ry };
+}
+
+// The variations on a circle (or an ellipse) around the centre, in the service's ring order:
+// offer i at angle 2 pi i / n clockwise from the top, so that each offer faces its opposite
+// (i + n/2) across the current material, with no gap however many there are.
 function drawRing(neighbors) {
-  const ordered = facingOrder(neighbors);
-  let side = 4;
-  while (4 * (side - 1) < ordered.length) side += 1;
-  const cells = ringCells(side);
+  const { rx, ry } = ringLayout(neighbors.length);
+  const boxes = ringBoxes(neighbors.length, rx, ry);
   const stage = $('#stage');
-  stage.style.setProperty('--side', side);
-  const figures = ordered.map((n, i) => {
-    const [row, column] = cells[Math.floor((i * cells.length) / ordered.length)];
+  stage.style.setProperty('--rx', `${rx}px`);
+  stage.style.setProperty('--ry', `${ry}px`);
+  const figures = neighbors.map((n, i) => {
     const button = document.createElement('button');
     button.type = 'button';
     button.className = 'variation';
-    button.style.gridArea = `${row + 1} / ${column + 1}`;
+    button.style.setProperty('--x', `${boxes[i].x}px`);
+    button.style.setProperty('--y', `${boxes[i].y}px`);
     Object.assign(button.dataset, {
       tab: n.tab, label: n.label, distance: n.distance, flags: n.flags.join(' '),
       material: JSON.stringify(n.material),
     });
-    button.title = `${n.material.model} ${JSON.stringify(n.material.params)}`;
+    button.title = `${n.words}: ${n.change}`;
     // Already at the end of the database grid (or of the colour range) in this direction.
     if (n.distance < 1e-3 * state.radius) button.classList.add('no-step');
     const img = document.createElement('img');
@@ -225,7 +230,7 @@ function drawRing(neighbors) {
   const lost = !document.activeElement || document.activeElement === document.body;
   if (ringFocus && lost) figures[0]?.focus();
   ringFocus = false;
-  return ordered.map((n, i) => [n, figures[i].querySelector('img')]);
+  return neighbors.map((n, i) => [n, figures[i].querySelector('img')]);
 }
 
 // The variations of the previous state are not clickable while the new ones load: a second
@@ -253,6 +258,21 @@ async function show(img, url, gen) {
   await img.decode();
 }
 
+// A short confirmation (an export), read out by screen readers, gone after a few seconds.
+let noticeTimer = 0;
+function notify(message) {
+  $('#notice').textContent = message;
+  $('#notice').hidden = false;
+  clearTimeout(noticeTimer);
+  noticeTimer = setTimeout(() => { $('#notice').hidden = true; }, 5000);
+}
+
+// The preview first, then the exact render in its place; resolves when the exact one is shown.
+async function progressive(img, material, gen) {
+  await show(img, thumbnail(material, true), gen);
+  await show(img, thumbnail(material), gen);
+}
+
 function showError(message) {
   $('#error').textContent = message;
   $('#error').hidden = !message;
@@ -278,7 +298,7 @@ async function redraw() {
   neighborQuery = new AbortController();
   progress.start('Finding variations\u2026');
   try {
-    const centreShown = show(centre.querySelector('img'), thumbnail(material), gen);
+    const centreShown = progressive(centre.querySelector('img'), material, gen);
     centreShown.catch(() => {});  // awaited below, unless this redraw is overtaken first
     const { neighbors } = await (await call('/api/neighbors',
       { material, radius: state.radius, tab: state.tab }, { signal: neighborQuery.signal })).json();
@@ -289,7 +309,7 @@ async function redraw() {
     const step = () => progress.set(`Rendering thumbnails ${++done} / ${total}`, done, total);
     progress.set(`Rendering thumbnails 0 / ${total}`, 0, total);
     await Promise.all([centreShown.then(step),
-      ...images.map(([n, img]) => show(img, thumbnail(n.material), gen).then(step))]);
+      ...images.map(([n, img]) => progressive(img, n.material, gen).then(step))]);
     if (gen !== generation) return;
     showError('');
   } catch (error) {
@@ -362,6 +382,8 @@ async function exportMaterial() {
     link.download = `brdfnav-${material.model}.${EXPORT_FORMATS[format].extension}`;
     link.click();
     setTimeout(() => URL.revokeObjectURL(link.href), 10000);
+    notify(`Exported ${link.download}: ${modelInfo(material.model).title}, with its ` +
+      'equivalents in the other models');
   } catch (error) {
     showError(`Export: ${error.message}`);
   } finally {

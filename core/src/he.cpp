@@ -20,10 +20,6 @@ const Rgb& inv_lambda_squared() {
   }();
   return k;
 }
-const Rgb& lambda_squared() {
-  static const Rgb k = inv_lambda_squared().inverse();
-  return k;
-}
 const Rgb& log_inv_lambda_squared() {
   static const Rgb log_k = inv_lambda_squared().log();
   return log_k;
@@ -33,104 +29,43 @@ const Rgb& log_inv_lambda_squared() {
 namespace he_detail {
 
 namespace {
-// The series never goes beyond this many terms: for g <= kBlendHi and t <= 20 g (the lobe down to
-// exp(-20) of its peak) the terms beyond it add less than 5e-10 of the sum (mpmath).
-constexpr int kMaxTerms = 64;
-// Terms below this fraction of the largest one are left out (at most kMaxTerms of them).
-constexpr double kSeriesTolerance = 1e-10;
-// A sum below this fraction of its value at t = 0 (its peak over directions) is returned as 0.
-constexpr double kNegligible = 1e-14;
-// Their logarithms as literals (std::log is not constexpr; no static-initialisation order issue).
-constexpr double kLogInvTolerance = 23.025850929940457;  // -ln(kSeriesTolerance)
-constexpr double kLogInvNegligible = 32.23619130191664;  // -ln(kNegligible)
-constexpr double kLogMaxTerms = 4.1588830833596715;      // ln(kMaxTerms)
+// Terms below exp(-kLogTolerance) of the largest are left out. The terms are log-concave in m, so
+// those beyond the cut on either side add less than it times the terms' spread in m over
+// sqrt(2 kLogTolerance) (or times 1 / (1 - their ratio) for small g): below 1e-13 of the sum.
+constexpr double kLogTolerance = 30.0;
 
-// 1/m for m = 0..kMaxTerms + 1 (entry 0 unused): the loops multiply, never divide.
-constexpr std::array<double, kMaxTerms + 2> kInverse = [] {
-  std::array<double, kMaxTerms + 2> inv{};
-  for (std::size_t m = 1; m < inv.size(); ++m) inv[m] = 1.0 / static_cast<double>(m);
-  return inv;
-}();
-
-// ln(m) and ln(m!) for m = 0..kMaxTerms + 1 (ln 0 unused): log-space terms without log() calls.
-struct LogTables {
-  std::array<double, kMaxTerms + 2> log{}, log_factorial{};
-};
-// Built on first use, so that a He evaluated during another file's static initialisation is safe.
-const LogTables& log_tables() {
-  static const LogTables tables = [] {
-    LogTables t;
-    for (int m = 1; m <= kMaxTerms + 1; ++m) {
-      t.log[m] = std::log(static_cast<double>(m));
-      t.log_factorial[m] = t.log_factorial[m - 1] + t.log[m];
-    }
-    return t;
-  }();
-  return tables;
-}
-
-double smoothstep(double x) {
-  x = std::clamp(x, 0.0, 1.0);
-  return x * x * (3.0 - 2.0 * x);
-}
-
-// Lower bound of ln(sum at t = 0), from its first term g exp(-g) and, for g >= 1, Jensen's
-// E[1/m | m >= 1] >= 1 / E[m | m >= 1], i.e. sum >= (1 - exp(-g))^2 / g >= (1 - 1/e)^2 / g.
-double log_sum_at_zero_lower_bound(double g, double log_g) {
-  constexpr double kLogOneMinusInvESquared = -0.9173502907741639;  // 2 ln(1 - 1/e)
-  const double first_term = log_g - g;
-  return g >= 1.0 ? std::max(first_term, kLogOneMinusInvESquared - log_g) : first_term;
-}
-
-// The terms a_m = w_m e_m, w_m = exp(-g) g^m / (m! m), e_m = exp(-t/m), are log-concave in m
-// (each factor is): their peak is found by bisection on the sign of ln a_{m+1} - ln a_m, all in
-// log space without exp(), and only the terms within kSeriesTolerance / kMaxTerms of the peak
-// are summed. Of their e_m only those with 2m past the last term need exp(), the others are
-// e_{2m}^2. The exps are the cost of eval(); this keeps them to about half the terms that matter.
+// The terms a_m = P_m exp(-t/m) / m, P_m = exp(-g) g^m / m! the Poisson weights, are log-concave
+// in m (each factor is): the largest is found by bisection on the sign of ln a_{m+1} - ln a_m
+// (near the Poisson mode m ~ g for t = 0, further up in the lobe's tail), and the terms are summed
+// outward from it in log space until they fall below exp(-kLogTolerance) of it.
 double channel_series_sum(double g, double t) {
   if (!(g > 0)) return 0.0;
   t = std::max(t, 0.0);
-  // exp(-t/m) < kNegligible for every m below `first`: those terms are negligible as a whole.
-  const double first = std::max(1.0, std::ceil(t / kLogInvNegligible));
-  if (!(first <= kMaxTerms)) return 0.0;
-  const int m_first = static_cast<int>(first);
-  const LogTables& ln = log_tables();
+  if (!(t < 1e300)) return 0.0;  // every exp(-t/m) underflows (and +inf would not bisect)
   const double log_g = std::log(g);
-  auto log_weight = [&](int m) { return -g + m * log_g - ln.log_factorial[m] - ln.log[m]; };
-  auto log_term = [&](int m) { return log_weight(m) - t * kInverse[m]; };
-  // ln a_{m+1} - ln a_m = ln g + ln m - 2 ln(m + 1) + t / (m (m + 1)), decreasing in m.
-  auto rises = [&](int m) {
-    return log_g + ln.log[m] - 2.0 * ln.log[m + 1] + t * kInverse[m] * kInverse[m + 1] > 0;
-  };
-  int m_peak = m_first;
-  for (int hi = kMaxTerms; m_peak < hi;) {
-    const int mid = (m_peak + hi) / 2;
-    if (rises(mid)) {
-      m_peak = mid + 1;
+  auto log_term = [&](double m) { return log_poisson(m, g, log_g) - std::log(m) - t / m; };
+  // ln a_{m+1} - ln a_m decreases in m and is negative beyond 3 g + sqrt(t) + 10, where
+  // ln g + ln m - 2 ln(m + 1) < -ln 3 and t / (m (m + 1)) < 1.
+  double lo = 1, hi = std::ceil(3 * g + std::sqrt(t) + 10);
+  while (lo < hi) {
+    const double mid = std::floor(0.5 * (lo + hi));
+    if (log_term(mid + 1) > log_term(mid)) {
+      lo = mid + 1;
     } else {
       hi = mid;
     }
   }
-  const double log_peak = log_term(m_peak);
-  // Terms below kNegligible times the sum at t = 0 (its peak over directions) do not matter
-  // either: when the peak term is one of them, neither does the whole sum.
-  const double log_negligible =
-      log_sum_at_zero_lower_bound(g, log_g) - kLogInvNegligible - kLogMaxTerms;
-  if (log_peak < log_negligible) return 0.0;
-  const double log_cut = std::max(log_peak - (kLogInvTolerance + kLogMaxTerms), log_negligible);
-  int m_begin = m_peak, m_last = m_peak;
-  while (m_begin > m_first && log_term(m_begin - 1) >= log_cut) --m_begin;
-  while (m_last < kMaxTerms && log_term(m_last + 1) >= log_cut) ++m_last;
-
-  std::array<double, kMaxTerms + 1> factor;  // only [m_begin, m_last] is used
-  for (int m = m_last; m >= m_begin; --m) {
-    factor[m] = 2 * m <= m_last ? factor[2 * m] * factor[2 * m] : std::exp(-t * kInverse[m]);
+  const double log_cut = log_term(lo) - kLogTolerance;
+  double sum = 0.0;
+  for (double m = lo; m >= 1; --m) {
+    const double l = log_term(m);
+    if (l < log_cut) break;
+    sum += std::exp(l);
   }
-  // w_{m+1} = w_m g m / (m + 1)^2.
-  double weight = std::exp(log_weight(m_begin)), sum = 0.0;
-  for (int m = m_begin; m <= m_last; ++m) {
-    sum += weight * factor[m];
-    weight *= g * (m * kInverse[m + 1]) * kInverse[m + 1];
+  for (double m = lo + 1;; ++m) {
+    const double l = log_term(m);
+    if (l < log_cut) break;
+    sum += std::exp(l);
   }
   return sum;
 }
@@ -145,47 +80,15 @@ Rgb tabulated_series_sum(const Rgb& g, const Rgb& t) {
   return tabulated_series_sums(g, g.log(), t);
 }
 
-Rgb rough_limit_sum(const Rgb& g, const Rgb& t) {
-  return (-t / g).exp() / g;
-}
-
 namespace {
-// distribution_sum() with log_g = ln(g).
-Rgb blended_sum(const Rgb& g, const Rgb& log_g, const Rgb& t) {
-  Rgb w;
-  for (int c = 0; c < 3; ++c) w[c] = smoothstep((g[c] - kBlendLo) / (kBlendHi - kBlendLo));
-  // The three channels' series at once where all need it (most of the smooth lobes' nodes).
-  Rgb series = Rgb::Zero();
-  if ((w < 1).all()) {
-    series = tabulated_series_sums(g, log_g, t);
-  } else {
-    for (int c = 0; c < 3; ++c)
-      if (w[c] < 1) series[c] = tabulated_series_sum(g[c], log_g[c], t[c]);
-  }
-  Rgb out;
-  for (int c = 0; c < 3; ++c) {
-    const double limit = w[c] > 0 ? std::exp(-t[c] / g[c]) / g[c] : 0.0;
-    out[c] = (1.0 - w[c]) * series[c] + w[c] * limit;
-  }
-  return out;
-}
-
-// distribution_sum() of g = g_scale / lambda^2 and t = t_scale / lambda^2 per channel, with one
-// log() for the three ln(g).
-Rgb distribution_sum_per_wavelength(double g_scale, double t_scale) {
+// tabulated_series_sum() of g = g_scale / lambda^2 and t = t_scale / lambda^2 per channel, with
+// one log() for the three ln(g). Every channel is summed for its own g: no rough-surface limit.
+Rgb series_sum_per_wavelength(double g_scale, double t_scale) {
   const Rgb& k = inv_lambda_squared();
-  // Red's g is the smallest. Once it is past the blend, every channel is at the rough limit
-  // exp(-t / g) / g, whose t / g = t_scale / g_scale is the same in all three: one exp() for the
-  // three (the rough and medium lobes, most of the time).
-  static_assert(He::kLambda[0] > He::kLambda[1] && He::kLambda[1] > He::kLambda[2]);
-  if (g_scale * k[0] >= kBlendHi) return std::exp(-t_scale / g_scale) / g_scale * lambda_squared();
-  return blended_sum(g_scale * k, std::log(g_scale) + log_inv_lambda_squared(), t_scale * k);
+  return tabulated_series_sums(g_scale * k, std::log(g_scale) + log_inv_lambda_squared(),
+                               t_scale * k);
 }
 }  // namespace
-
-Rgb distribution_sum(const Rgb& g, const Rgb& t) {
-  return blended_sum(g, g.log(), t);
-}
 
 }  // namespace he_detail
 
@@ -323,7 +226,7 @@ He::LobeTerms He::lobe_terms(const DirectionTerms& i, const DirectionTerms& o) c
   const double g_scale = (2.0 * kPi * sigma0 * vz) * (2.0 * kPi * sigma0 * vz);
   const double tau_scale = kPi * kPi * tau * tau;
   t.prefactor = 0.25 * tau_scale;
-  t.sum = he_detail::distribution_sum_per_wavelength(g_scale, tau_scale * vxy2);
+  t.sum = he_detail::series_sum_per_wavelength(g_scale, tau_scale * vxy2);
   return t;
 }
 

@@ -100,78 +100,150 @@ const HermiteTable1D<1>& sigma0_ratio_table() {
   return table;
 }
 
-// --- The series, as f = ln S over u = ln g and w = sqrt(t / (g + 1)). In w the lobe's
+// --- The series S(g, t) = sum_{m>=1} exp(-g) g^m / (m! m) exp(-t/m), tabulated as
+// F = ln S + ln g + w^2 over a row coordinate s(g) and w = sqrt(t / (g + 1)). In w the lobe's
 // Gaussian-like fall-off exp(-c t) is a parabola, and w = 10 is past 1e-15 of the peak for every
 // g (a t of about 100 for small g, of 100 g for large g). Below g = 0.01 four terms suffice.
+//
+// The rows are uniform in s. Up to kTableRoughFrom (~18), s = u = ln g; beyond it
+// s = u1 + 4 (1 - (kTableRoughFrom / g)^(1/4)), u1 = ln kTableRoughFrom, which reaches g = infinity
+// at the last row; the two meet with ds/du = 1 at a node. For large g the sum is
+// exp(-t/g) / g (1 + O(1/g)) (the rough-surface limit times its corrections), so F = O(1/g), a
+// smooth function of s (1/g is a quartic in s) that vanishes with its derivatives at g = infinity:
+// no g is outside the table. Below the seam, ln g + w^2 is linear in s and quadratic in w, which
+// the bicubic interpolation reproduces exactly: there it interpolates ln S as it would alone.
 constexpr double kTableLoG = 0.01;
 constexpr double kTableW = 10.0;
-constexpr int kNu = 61, kNw = 121;
-// Terms kept when building the nodes: every term above 1e-300 of the largest for t <= 100 (g + 1).
-constexpr int kNodeTerms = 200;
+constexpr double kU0 = -4.605170185988091;  // ln kTableLoG
+constexpr double kHu = 0.125;
+constexpr int kLogRows = 61, kRoughRows = 32;
+constexpr double kU1 = kU0 + (kLogRows - 1) * kHu;  // ln kTableRoughFrom
+constexpr double kRoughSpan = kRoughRows * kHu;     // the 4 of s beyond the seam
+static_assert(kRoughSpan == 4.0, "ds/du = 1 on both sides of the seam");
+constexpr int kNu = kLogRows + kRoughRows, kNw = 121;
+constexpr double kHw = kTableW / (kNw - 1);
 
-// f, df/du, df/dw and d2f/dudw at one node.
-using SeriesNode = std::array<double, 4>;
-
-// With a_m the terms and S, S_t, S_g, S_tt, S_tg the sum and its derivatives (sums of a_m times
-// -1/m, m/g - 1, 1/m^2, 1/m - 1/g), by the chain rule through t = (g + 1) w^2, g = e^u.
-// ln(m! m) for m = 1..kNodeTerms (entry 0 unused).
-std::array<double, kNodeTerms + 1> log_factorial_times_m() {
-  std::array<double, kNodeTerms + 1> out{};
-  double log_factorial = 0;
-  for (int m = 1; m <= kNodeTerms; ++m) {
-    const double log_m = std::log(static_cast<double>(m));
-    log_factorial += log_m;
-    out[m] = log_factorial + log_m;
-  }
-  return out;
+// s of g > 0, log_g = ln g.
+double row_coordinate(double g, double log_g) {
+  if (g <= kTableRoughFrom) return log_g;
+  return kU1 + kRoughSpan * (1 - std::sqrt(std::sqrt(kTableRoughFrom / g)));
 }
 
-SeriesNode series_node(const std::array<double, kNodeTerms + 1>& log_denominator, double u,
-                       double w) {
-  const double g = std::exp(u), w2 = w * w, t = (g + 1) * w2;
-  std::array<double, kNodeTerms + 1> log_a;
-  double log_max = -HUGE_VAL;
-  for (int m = 1; m <= kNodeTerms; ++m) {
-    log_a[m] = -g + m * u - log_denominator[m] - t / m;
-    log_max = std::max(log_max, log_a[m]);
+// F, dF/ds, dF/dw and d2F/dsdw at one node.
+using SeriesNode = std::array<double, 4>;
+
+// ln m and ln(m! m) for small m (entry 0 unused).
+struct SmallLogs {
+  std::vector<double> log, log_factorial_times_m;
+};
+
+// The node at g (u = ln g, du_ds = du/ds there) and w, from the terms a_m of the series, which
+// are log-concave in m: all those within exp(-50) of the largest or, where the largest is at
+// m >= 32, every h-th of them times h, h = floor(sigma / 3) for the terms' spread sigma (h >= 2
+// from g ~ 36 on). The terms are then a smooth bell in m, and by Poisson summation the sum over
+// every h-th m differs from h times the integral, as does the sum over every m, by about
+// exp(-2 pi^2 sigma^2 / h^2) = exp(-178) relative: some 60 terms per node at any g, with nodes
+// equal to those of the sums over every m to 1e-12 (measured for g from 7 to 3000).
+// With E[.] the average over m weighted by a_m and d ln a_m = (m - g - g w^2 / m) du
+// - 2 (g + 1) w / m dw (t = (g + 1) w^2): F_u = E[m - g - g w^2 / m] + 1,
+// F_w = 2 w (1 - (g + 1) E[1/m]), F_uw = -2 g w E[1/m] - 2 (g + 1) w Cov(m - g w^2 / m, 1/m).
+SeriesNode series_node(const SmallLogs& small, double u, double g, double du_ds, double w) {
+  const double w2 = w * w, t = (g + 1) * w2;
+  const double small_terms = static_cast<double>(small.log.size());
+  auto log_of = [&](double m) {
+    return m < small_terms ? small.log[static_cast<std::size_t>(m)] : std::log(m);
+  };
+  auto log_term = [&](double m) {
+    if (m < small_terms)
+      return -g + m * u - small.log_factorial_times_m[static_cast<std::size_t>(m)] - t / m;
+    return log_poisson(m, g, u) - std::log(m) - t / m;
+  };
+  // The largest term, by bisection on the sign of ln a_{m+1} - ln a_m
+  // = ln g + ln m - 2 ln(m + 1) + t / (m (m + 1)), decreasing in m. Beyond 3 g + sqrt(t) + 10 it
+  // is negative: ln g + ln m - 2 ln(m + 1) < -ln 3 and t / (m (m + 1)) < 1.
+  double lo = 1, hi = std::ceil(3 * g + std::sqrt(t) + 10);
+  while (lo < hi) {
+    const double mid = std::floor(0.5 * (lo + hi));
+    if (u + log_of(mid) - 2 * log_of(mid + 1) + t / (mid * (mid + 1)) > 0) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
   }
-  // Terms below exp(-50) of the largest change no sum by more than 2e-20 (of 200 terms).
-  constexpr double kLogIgnored = -50;
-  double s = 0, st = 0, sg = 0, stt = 0, stg = 0;
-  for (int m = 1; m <= kNodeTerms; ++m) {
-    if (log_a[m] - log_max < kLogIgnored) continue;
-    const double a = std::exp(log_a[m] - log_max), inv_m = 1.0 / m;
+  const double m_peak = lo, log_max = log_term(m_peak);
+  // Spread from the curvature of ln a_m at its peak, -1/m - 2 t / m^3.
+  const double sigma = 1 / std::sqrt(1 / m_peak + 2 * t / (m_peak * m_peak * m_peak));
+  constexpr double kLogIgnored = -50;        // a term this far below the largest moves no sum
+  std::vector<std::array<double, 2>> terms;  // (m, a_m / a_max)
+  auto collect = [&](double h) {
+    terms.clear();
+    for (double m = m_peak; m >= 1; m -= h) {
+      const double l = log_term(m) - log_max;
+      if (l < kLogIgnored) return true;
+      terms.push_back({m, std::exp(l)});
+    }
+    return h == 1;  // with h > 1 the terms had not yet faded at m = 1
+  };
+  double h = m_peak >= 32 ? std::max(1.0, std::floor(sigma / 3)) : 1.0;
+  if (!collect(h)) collect(h = 1);
+  for (double m = m_peak + h;; m += h) {
+    const double l = log_term(m) - log_max;
+    if (l < kLogIgnored) break;
+    terms.push_back({m, std::exp(l)});
+  }
+  double s = 0, e_inv = 0, e_x = 0;  // sum, then E[1/m] and E[m - g - g w^2 / m]
+  for (const auto& [m, a] : terms) {
     s += a;
-    st -= a * inv_m;
-    sg += a * (m / g - 1);
-    stt += a * inv_m * inv_m;
-    stg += a * (inv_m - 1 / g);
+    e_inv += a / m;
+    e_x += a * ((m - g) - g * w2 / m);
   }
-  const double rt = st / s, rg = sg / s;
-  // d(S_t / S)/dg along fixed w, where dt/dg = w^2.
-  const double drt = (stg + stt * w2) / s - rt * (sg + st * w2) / s;
-  return {log_max + std::log(s), g * (rg + rt * w2), 2 * (g + 1) * w * rt,
-          2 * w * g * rt + 2 * (g + 1) * w * g * drt};
+  e_inv /= s;
+  e_x /= s;
+  double cov = 0;
+  for (const auto& [m, a] : terms) cov += a * (((m - g) - g * w2 / m) - e_x) * (1 / m - e_inv);
+  cov /= s;
+  const double f_u = e_x + 1;
+  const double f_uw = -2 * g * w * e_inv - 2 * (g + 1) * w * cov;
+  return {log_max + std::log(h * s) + u + w2, f_u * du_ds, 2 * w * (1 - (g + 1) * e_inv),
+          f_uw * du_ds};
 }
 
 class SeriesTable {
  public:
   SeriesTable() : nodes_(kNu * kNw) {
-    const auto log_denominator = log_factorial_times_m();
+    // ln m and ln(m! m) for m < 1024 (entry 0 unused): the terms of g up to ~250, where every m
+    // is summed, without logs, to 1e-12 (rounding of terms of up to ~1e4).
+    SmallLogs small;
+    small.log.resize(1024);
+    small.log_factorial_times_m.resize(1024);
+    double log_factorial = 0;
+    for (std::size_t m = 1; m < small.log.size(); ++m) {
+      small.log[m] = std::log(static_cast<double>(m));
+      log_factorial += small.log[m];
+      small.log_factorial_times_m[m] = log_factorial + small.log[m];
+    }
     for (int i = 0; i < kNu; ++i) {
-      for (int j = 0; j < kNw; ++j) {
-        nodes_[i * kNw + j] = series_node(log_denominator, kU0 + i * kHu, j * kHw);
+      // g = infinity at the last row: F = 0 with its derivatives (the nodes' zero).
+      if (i == kNu - 1) break;
+      double u = kU0 + i * kHu, du_ds = 1;
+      if (i >= kLogRows) {
+        // 1 - (kTableRoughFrom / g)^(1/4) = x, x = (s - u1) / 4, and du/ds = (g / g1)^(1/4).
+        const double x = static_cast<double>(i - (kLogRows - 1)) / kRoughRows;
+        u = kU1 - 4 * std::log1p(-x);
+        du_ds = 1 / (1 - x);
       }
+      const double g = std::exp(u);
+      for (int j = 0; j < kNw; ++j) nodes_[i * kNw + j] = series_node(small, u, g, du_ds, j * kHw);
     }
   }
-  // log_sum() of three (u, w) at once, four lanes wide (the fourth a copy of the third): the
+  // log_sum() of three (s, w) at once, four lanes wide (the fourth a copy of the third): the
   // weights of all three in one pass, then per lane one 4-wide load of each of the four nodes,
-  // whose (f, df/du, df/dw, d2f/dudw) the w-weights combine in one go. The same interpolation as
+  // whose (F, dF/ds, dF/dw, d2F/dsdw) the w-weights combine in one go. The same interpolation as
   // log_sum(), its sums in another order and fused: equal to rounding.
-  __attribute__((target("avx2,fma"))) std::array<double, 3> log_sums(const Rgb& u,
+  __attribute__((target("avx2,fma"))) std::array<double, 3> log_sums(const Rgb& s,
                                                                      const Rgb& w) const {
     const __m256d su =
-        _mm256_mul_pd(_mm256_sub_pd(_mm256_setr_pd(u[0], u[1], u[2], u[2]), _mm256_set1_pd(kU0)),
+        _mm256_mul_pd(_mm256_sub_pd(_mm256_setr_pd(s[0], s[1], s[2], s[2]), _mm256_set1_pd(kU0)),
                       _mm256_set1_pd(1 / kHu));
     const __m256d sw =
         _mm256_mul_pd(_mm256_setr_pd(w[0], w[1], w[2], w[2]), _mm256_set1_pd(1 / kHw));
@@ -189,7 +261,7 @@ class SeriesTable {
     std::array<double, 3> out;
     for (int c = 0; c < 3; ++c) {
       const double* n0 = nodes_[is[c] * kNw + js[c]].data();
-      const double* n1 = n0 + 4 * kNw;  // (f, df/du) at u nodes i and i + 1:
+      const double* n1 = n0 + 4 * kNw;  // (F, dF/ds) at s nodes i and i + 1:
       const __m128d row0 = along_w(n0, v0w[c], v1w[c], d0w[c], d1w[c]);
       const __m128d row1 = along_w(n1, v0w[c], v1w[c], d0w[c], d1w[c]);
       const __m128d sum = _mm_fmadd_pd(row1, _mm_setr_pd(v1u[c], d1u[c]),
@@ -199,15 +271,15 @@ class SeriesTable {
     return out;
   }
 
-  // u in [kU0, ln kBlendHi], w in [0, kTableW).
-  double log_sum(double u, double w) const {
-    const double su = (u - kU0) * (1 / kHu), sw = w * (1 / kHw);
+  // F at s in [kU0, kU1 + 4], w in [0, kTableW).
+  double log_sum(double s, double w) const {
+    const double su = (s - kU0) * (1 / kHu), sw = w * (1 / kHw);
     const int i = std::clamp(static_cast<int>(su), 0, kNu - 2);
     const int j = std::min(static_cast<int>(sw), kNw - 2);
     const HermiteWeights wu(su - i, kHu), ww(sw - j, kHw);
     const SeriesNode* n0 = &nodes_[i * kNw + j];
     const SeriesNode* n1 = n0 + kNw;
-    // Along w at both u nodes (f and df/du), then along u.
+    // Along w at both s nodes (F and dF/ds), then along s.
     const double f0 = ww(n0[0][0], n0[1][0], n0[0][2], n0[1][2]);
     const double fu0 = ww(n0[0][1], n0[1][1], n0[0][3], n0[1][3]);
     const double f1 = ww(n1[0][0], n1[1][0], n1[0][2], n1[1][2]);
@@ -231,9 +303,9 @@ class SeriesTable {
     _mm256_store_pd(d1.data(), _mm256_mul_pd(x3_x2, hh));
   }
 
-  // Along w between the nodes at n and n + 1 (n's row of u), given the w-weights:
-  // a = v0 n[0] + v1 n[1] and b = d0 n[0] + d1 n[1] over (f, df/du, df/dw, d2f/dudw), then
-  // (f, df/du) = (a.f + b.fw, a.fu + b.fuw): a's lanes 0, 1 plus b's lanes 2, 3.
+  // Along w between the nodes at n and n + 1 (n's row of s), given the w-weights:
+  // a = v0 n[0] + v1 n[1] and b = d0 n[0] + d1 n[1] over (F, dF/ds, dF/dw, d2F/dsdw), then
+  // (F, dF/ds) = (a.F + b.Fw, a.Fs + b.Fsw): a's lanes 0, 1 plus b's lanes 2, 3.
   __attribute__((target("avx2,fma"))) static __m128d along_w(const double* n, double v0, double v1,
                                                              double d0, double d1) {
     const __m256d lo = _mm256_loadu_pd(n), hi = _mm256_loadu_pd(n + 4);
@@ -244,10 +316,6 @@ class SeriesTable {
     return _mm_add_pd(_mm256_castpd256_pd128(a), _mm256_extractf128_pd(b, 1));
   }
 
-  static constexpr double kU0 = -4.605170185988091;  // ln kTableLoG
-  static constexpr double kU1 = 3.091042453358316;   // ln kBlendHi
-  static constexpr double kHu = (kU1 - kU0) / (kNu - 1);
-  static constexpr double kHw = kTableW / (kNw - 1);
   std::vector<SeriesNode> nodes_;
 };
 
@@ -290,14 +358,15 @@ double tabulated_sigma0_ratio(double y) {
 Rgb tabulated_series_sums(const Rgb& g, const Rgb& log_g, const Rgb& t) {
   static const bool avx2 = cpu_has_avx2_fma();
   const Rgb w2 = t.max(0.0) / (g + 1);
-  const bool in_table =
-      (g >= kTableLoG).all() && (g <= kBlendHi).all() && (w2 < kTableW * kTableW).all();
+  const bool in_table = (g >= kTableLoG).all() && (w2 < kTableW * kTableW).all();
   if (!avx2 || !in_table)
     return Rgb(tabulated_series_sum(g[0], log_g[0], t[0]),
                tabulated_series_sum(g[1], log_g[1], t[1]),
                tabulated_series_sum(g[2], log_g[2], t[2]));
-  const std::array<double, 3> f = series_table().log_sums(log_g, w2.sqrt());
-  return Rgb(std::exp(f[0]), std::exp(f[1]), std::exp(f[2]));
+  const Rgb s(row_coordinate(g[0], log_g[0]), row_coordinate(g[1], log_g[1]),
+              row_coordinate(g[2], log_g[2]));
+  const std::array<double, 3> f = series_table().log_sums(s, w2.sqrt());
+  return (Rgb(f[0], f[1], f[2]) - log_g - w2).exp();
 }
 
 double tabulated_series_sum(double g, double log_g, double t) {
@@ -306,7 +375,23 @@ double tabulated_series_sum(double g, double log_g, double t) {
   if (g < kTableLoG) return small_g_series_sum(g, t);
   const double w2 = t / (g + 1);
   if (!(w2 < kTableW * kTableW)) return 0.0;
-  return std::exp(series_table().log_sum(log_g, std::sqrt(w2)));
+  return std::exp(series_table().log_sum(row_coordinate(g, log_g), std::sqrt(w2)) - log_g - w2);
+}
+
+double log_poisson(double m, double g, double log_g) {
+  // ln m! for m < 20, summed once.
+  static const std::array<double, 20> log_factorial = [] {
+    std::array<double, 20> out{};
+    for (int k = 2; k < 20; ++k) out[k] = out[k - 1] + std::log(static_cast<double>(k));
+    return out;
+  }();
+  if (m < 20) return -g + m * log_g - log_factorial[static_cast<int>(m)];
+  // ln m! = m ln m - m + ln(2 pi m) / 2 + 1/(12 m) - 1/(360 m^3) + 1/(1260 m^5) - 1/(1680 m^7)
+  // (the next, 1/(1188 m^9), is 2e-15 at m = 20), with -g + m ln g - m ln m + m formed as
+  // d - m ln(1 + d / g), d = m - g: no large terms that cancel.
+  const double d = m - g, inv = 1 / m, inv2 = inv * inv;
+  const double stirling = inv * (1.0 / 12 - inv2 * (1.0 / 360 - inv2 * (1.0 / 1260 - inv2 / 1680)));
+  return d - m * std::log1p(d / g) - 0.5 * std::log(2 * kPi * m) - stirling;
 }
 
 }  // namespace brdfnav::he_detail

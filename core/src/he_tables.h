@@ -11,4 +11,9 @@ double tabulated_series_sum(double g, double log_g, double t);
 // with AVX2 and FMA (checked at run time) when all three are inside the table.
 Rgb tabulated_series_sums(const Rgb& g, const Rgb& log_g, const Rgb& t);
 
+// ln of the Poisson weight exp(-g) g^m / m! for integer m >= 1, with log_g = ln(g), at any m and
+// g: to about 1e-16 (1 + |m - g|) absolute for m >= 20 (Stirling's series, no large terms that
+// cancel), to the rounding of m ln g - g below.
+double log_poisson(double m, double g, double log_g);
+
 }  // namespace brdfnav::he_detail

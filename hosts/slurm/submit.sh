@@ -9,7 +9,8 @@
 #   WORK         the shards' directory, on a file system every node shares (required)
 #   DB           the database directory the merge creates (required; must not exist)
 #   PROFILE=paper          grid density: smoke, test, default or paper
-#   ENV_MAP=/usr/share/blender/datafiles/studiolights/world/interior.exr  (every node reads it)
+#   ENV_MAP=     the environment map, which every node reads (empty: brdfnav's default, as
+#                `$BRDFNAV precompute --help` gives it)
 #   RES=         image width and height in pixels (empty: the profile's)
 #   SHARDS=32    number of shards, so of array tasks (at least 2)
 #   BRDFNAV=brdfnav        the brdfnav executable as the nodes see it
@@ -27,7 +28,7 @@ set -euo pipefail
 : "${WORK:?set WORK to a directory on a shared file system (docs/SLURM.md)}"
 : "${DB:?set DB to the database directory to create}"
 : "${PROFILE:=paper}"
-: "${ENV_MAP:=/usr/share/blender/datafiles/studiolights/world/interior.exr}"
+: "${ENV_MAP:=}"
 : "${RES:=}"
 : "${SHARDS:=32}"
 : "${BRDFNAV:=brdfnav}"
@@ -42,6 +43,14 @@ if [[ ! $SHARDS =~ ^[0-9]+$ ]] || ((10#$SHARDS < 2)); then
 fi
 SHARDS=$((10#$SHARDS))
 [[ -z $RES || $RES =~ ^[0-9]+$ ]] || die "RES=$RES: expected a number of pixels"
+# brdfnav's default map, from the one place it is defined: the tasks are then given it by name,
+# so the logs and the check of kept shards below name the map every shard is made with.
+if [[ -z $ENV_MAP ]]; then
+  ENV_MAP=$("$BRDFNAV" precompute --help 2>/dev/null | sed -n 's/^ *--env TEXT=\([^ ]*\).*/\1/p') ||
+    true
+  [[ -n $ENV_MAP ]] ||
+    die "cannot ask $BRDFNAV for its default environment map here: set ENV_MAP to the map"
+fi
 # Absolute paths: the jobs may start in another directory, and the logs should name them whole.
 WORK=$(realpath -m -- "$WORK")
 DB=$(realpath -m -- "$DB")

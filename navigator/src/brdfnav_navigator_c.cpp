@@ -150,7 +150,11 @@ brdfnav_status brdfnav_neighbors_get(const brdfnav_neighbors* list, size_t index
     result.label = n.label.c_str();
     result.distance = n.distance;
     result.flags = (n.at_boundary ? BRDFNAV_NEIGHBOR_AT_BOUNDARY : 0u) |
-                   (n.clamped ? BRDFNAV_NEIGHBOR_CLAMPED : 0u);
+                   (n.clamped ? BRDFNAV_NEIGHBOR_CLAMPED : 0u) |
+                   (n.beyond_radius ? BRDFNAV_NEIGHBOR_BEYOND_RADIUS : 0u);
+    result.words = n.words.c_str();
+    result.change = n.change.c_str();
+    result.opposite = n.opposite;
     result.material.model = CStrings::get().models[static_cast<std::size_t>(m.model)].name.c_str();
     result.material.params = e.params.data();
     result.material.param_count = e.params.size();

@@ -25,6 +25,7 @@ void emit_flags(YAML::Emitter& out, const Neighbor& n) {
   out << YAML::Key << "flags" << YAML::Value << YAML::Flow << YAML::BeginSeq;
   if (n.at_boundary) out << "at_boundary";
   if (n.clamped) out << "clamped";
+  if (n.beyond_radius) out << "beyond_radius";
   out << YAML::EndSeq;
 }
 
@@ -62,6 +63,9 @@ std::string neighbors_to_yaml(const std::vector<Neighbor>& neighbors) {
     out << YAML::BeginMap;
     out << YAML::Key << "tab" << YAML::Value << std::string(tab_name(n.tab));
     out << YAML::Key << "label" << YAML::Value << YAML::DoubleQuoted << n.label;
+    out << YAML::Key << "words" << YAML::Value << YAML::DoubleQuoted << n.words;
+    out << YAML::Key << "change" << YAML::Value << YAML::DoubleQuoted << n.change;
+    out << YAML::Key << "opposite" << YAML::Value << n.opposite;
     out << YAML::Key << "distance" << YAML::Value << yaml_number(n.distance);
     emit_flags(out, n);
     emit_material_entry(out, n.material);

@@ -2,6 +2,7 @@
 
 #include "colour.h"
 #include "kmeans.h"
+#include "ring.h"
 #include "walk.h"
 
 #include <algorithm>
@@ -24,7 +25,7 @@ std::string model_name(ModelId id) {
 }
 
 Neighbor neighbor_of(Tab tab, std::string label, const nav::Hit& hit, double distance) {
-  Neighbor n{tab, std::move(label), hit.material, distance};
+  Neighbor n{.tab = tab, .label = std::move(label), .material = hit.material, .distance = distance};
   (tab == Tab::diffuse || tab == Tab::specular ? n.clamped : n.at_boundary) = !hit.reached;
   return n;
 }
@@ -119,6 +120,20 @@ std::string radius_requirement() {
   return std::string("must be a finite distance of at least ") + min;
 }
 
+Material Navigator::start_material() const {
+  const ProfileGrid& g = database_.manifest().grids.front();
+  Material m = default_material(g.model);
+  for (std::size_t d = 0; d < g.grid.dimensions(); ++d) {
+    const ParamSpec& spec = g.grid.specs()[d];
+    const std::vector<double>& axis = g.grid.axis(d);
+    m.params[d] =
+        from_scale(spec, (to_scale(spec, axis.front()) + to_scale(spec, axis.back())) / 2);
+  }
+  m.rho_d = Rgb::Constant(0.2);
+  m.rho_s = Rgb::Constant(0.3);
+  return m;
+}
+
 Eigen::VectorXf Navigator::embed(const Material& m) const {
   check_colorspace(m);
   return embedding_of(m.model).embed(m);
@@ -175,6 +190,13 @@ std::vector<Neighbor> Navigator::neighbors(const Material& current, double radiu
   validate(current);
   check_colorspace(current);
   check_query(radius, clusters);
+  std::vector<Neighbor> offers = tab_offers(current, radius, tab, clusters);
+  nav::describe(offers, current);
+  return nav::ring_order(std::move(offers));
+}
+
+std::vector<Neighbor> Navigator::tab_offers(const Material& current, double radius, Tab tab,
+                                            int clusters) const {
   const ModelEmbedding& embedding = embedding_of(current.model);
   switch (tab) {
     case Tab::lobe:
@@ -195,7 +217,9 @@ std::vector<Neighbor> Navigator::neighbors(const Material& current, double radiu
 
 std::vector<Neighbor> Navigator::gallery(int count) const {
   check_query(1, count);
-  return gallery_tab(embed(matte_), count);
+  std::vector<Neighbor> offers = gallery_tab(embed(matte_), count);
+  nav::describe(offers, matte_);
+  return offers;
 }
 
 std::vector<Neighbor> Navigator::lobe_tab(const Material& current, double radius) const {
@@ -204,13 +228,17 @@ std::vector<Neighbor> Navigator::lobe_tab(const Material& current, double radius
                   embedding, current, radius);
 }
 
-// Paper, section 4: from the current material's best fit A' in every other model, that model's
-// equidistant neighbours around A' (the sphere is centred at A', as in the paper, so the walk
-// starts inside it however good the fit); then drop those within delta of their own best fit
-// in the current model, and keep one per k-means cluster.
+// Paper, section 4, with the sphere around the current material: from the current material's
+// best fit A' in every other model, that model's neighbours at distance eps from the current
+// material along each of its lobe paths from A'. A model whose best fit is already farther than
+// eps offers that fit, flagged beyond_radius: the closest it comes. Offers within delta of their
+// own best fit back in the current model are dropped (the current model shows them already),
+// then one is kept per k-means cluster, and of two kept offers within delta of each other only
+// the first (they would look the same).
 std::vector<Neighbor> Navigator::models_tab(const Material& current, double radius,
                                             int clusters) const {
   const Eigen::VectorXf from = embed(current);
+  const double delta = options_.delta_factor * radius;
   std::vector<Neighbor> candidates;
   std::vector<Eigen::VectorXf> points;
   for (const ProfileGrid& g : database_.manifest().grids) {
@@ -219,14 +247,22 @@ std::vector<Neighbor> Navigator::models_tab(const Material& current, double radi
       continue;
     const ModelEmbedding& embedding = embedding_of(g.model);
     const Material fit = convert(current, g.model);
-    const Eigen::VectorXf centre = embedding.embed(fit);
+    Eigen::VectorXf fit_point = embedding.embed(fit);
+    const double residual = embedding_distance(fit_point, from);
+    if (residual >= radius) {
+      Neighbor n{
+          .tab = Tab::models, .label = model_name(g.model), .material = fit, .distance = residual};
+      n.beyond_radius = true;
+      candidates.push_back(std::move(n));
+      points.push_back(std::move(fit_point));
+      continue;
+    }
     for (const nav::Path& path : nav::lobe_paths(fit, embedding.grid(), options_.ward_isotropic)) {
-      const nav::Hit hit = nav::walk_to_sphere(embedding, centre, radius, path);
+      const nav::Hit hit = nav::walk_to_sphere(embedding, from, radius, path, residual);
       Eigen::VectorXf x = embedding.embed(hit.material);
       const Eigen::VectorXf back = embed(convert(hit.material, current.model));
-      if (embedding_distance(x, back) < options_.delta_factor * radius) continue;
-      candidates.push_back(
-          neighbor_of(Tab::models, model_name(g.model), hit, embedding_distance(x, from)));
+      if (embedding_distance(x, back) < delta) continue;
+      candidates.push_back(neighbor_of(Tab::models, model_name(g.model), hit, hit.distance));
       points.push_back(std::move(x));
     }
   }
@@ -235,8 +271,15 @@ std::vector<Neighbor> Navigator::models_tab(const Material& current, double radi
   for (std::size_t i = 0; i < points.size(); ++i)
     matrix.col(static_cast<Eigen::Index>(i)) = points[i];
   std::vector<Neighbor> out;
-  for (std::size_t i : nav::kmeans_representatives(matrix, {clusters, options_.threads}))
+  std::vector<std::size_t> kept;
+  for (std::size_t i : nav::kmeans_representatives(matrix, {clusters, options_.threads})) {
+    const auto alike = [&](std::size_t j) {
+      return embedding_distance(points[i], points[j]) < delta;
+    };
+    if (std::any_of(kept.begin(), kept.end(), alike)) continue;
+    kept.push_back(i);
     out.push_back(std::move(candidates[i]));
+  }
   return out;
 }
 
@@ -246,7 +289,10 @@ std::vector<Neighbor> Navigator::gallery_tab(const Eigen::VectorXf& from, int co
        nav::kmeans_representatives(gallery_embeddings_, {count, options_.threads})) {
     const Material& m = gallery_materials_[i];
     const auto x = gallery_embeddings_.col(static_cast<Eigen::Index>(i));
-    out.push_back({Tab::gallery, model_name(m.model), m, static_cast<double>((x - from).norm())});
+    out.push_back({.tab = Tab::gallery,
+                   .label = model_name(m.model),
+                   .material = m,
+                   .distance = static_cast<double>((x - from).norm())});
   }
   return out;
 }

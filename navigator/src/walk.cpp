@@ -80,14 +80,14 @@ Path scale_path(const Material& m, const ParamGrid& grid, const std::vector<std:
 }  // namespace
 
 Hit walk_to_sphere(const ModelEmbedding& embedding, const Eigen::VectorXf& centre, double radius,
-                   const Path& path) {
+                   const Path& path, double start_distance) {
   // The root of f(s) = distance(s) - radius, negative inside the sphere. A hit reports the
   // distance itself: distance - radius + radius would lose it to rounding when the radius is far
   // larger.
   const auto distance = [&](double s) {
     return embedding_distance(embedding.embed(path.material(s)), centre);
   };
-  double lo = 0, f_lo = -radius;  // the walk starts at the centre
+  double lo = 0, f_lo = start_distance - radius;  // the walk starts inside
   for (std::size_t i = 1; i < path.breaks.size(); ++i) {
     double hi = path.breaks[i], d_hi = distance(hi), f_hi = d_hi - radius;
     if (f_hi < 0) {

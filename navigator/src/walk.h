@@ -33,9 +33,10 @@ struct Hit {
 // distance, inside the first segment whose end is at least `radius` from `centre`; the hit is
 // the crossing's outer side (distance >= radius, within 1e-4 of it). Along one parameter the
 // embedding is a cubic inside a grid cell, smooth and nearly straight at the scale of a cell, so
-// a path that leaves the sphere inside a segment is still outside at its end.
+// a path that leaves the sphere inside a segment is still outside at its end. The path starts
+// at `start_distance` from the centre (0: at the centre), which must be below `radius`.
 Hit walk_to_sphere(const ModelEmbedding& embedding, const Eigen::VectorXf& centre, double radius,
-                   const Path& path);
+                   const Path& path, double start_distance = 0);
 
 // The iso-parameter paths from `m` through `grid`: every parameter up ("<name>+") and down
 // ("<name>-"), each in its own scale (log or linear), to the end of the grid. With

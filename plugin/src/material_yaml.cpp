@@ -357,6 +357,19 @@ Material load_material(std::string_view path_or_spec) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".yaml" || extension == ".yml")
     throw MaterialFileError(path.string() + ": no such material file");
+  // Neither a spec ("model:key=value,...") nor a bare model name: a file name that was mistyped
+  // or lacks its extension, which "unknown model" would not tell.
+  const bool spec =
+      path_or_spec.find(':') != std::string_view::npos || find_model(path_or_spec) != nullptr;
+  if (!spec) {
+    std::string models;
+    for (const ModelInfo& info : brdfnav::models())
+      models += (models.empty() ? "" : ", ") + std::string(info.name);
+    throw MaterialFileError(path.string() +
+                            ": no such material file, and not a model name or an inline spec "
+                            "(MODEL:key=value,...; models: " +
+                            models + ")");
+  }
   return parse_material_spec(path_or_spec);
 }
 

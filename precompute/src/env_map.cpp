@@ -91,11 +91,23 @@ EnvMap EnvMap::load(const std::filesystem::path& path, const EnvLoadOptions& opt
                         " (the sanitize option, --sanitize-env, sets them to 0)");
     if (warn) warn(name + ": " + what + "; set to 0");
   }
+  // Filtered and compressed maps ring slightly below 0 around their lamps (Blender's maps down
+  // to -0.4% of their mean): clamped silently. A negative beyond kNegligibleNegative of the mean
+  // says something is wrong with the map, and is warned of.
+  double sum = 0, lowest = 0;
+  for (float v : rgb) {
+    sum += std::max(v, 0.f);
+    lowest = std::min<double>(lowest, v);
+  }
+  const double mean = sum / double(rgb.size());
   const std::size_t negative = fix_texels(
       rgb, [](float v) { return v < 0; }, 0.f);
-  if (negative > 0 && warn)
+  if (negative > 0 && warn && lowest < -kNegligibleNegative * mean) {
+    char numbers[96];
+    std::snprintf(numbers, sizeof numbers, " (down to %.3g, against a mean of %.3g)", lowest, mean);
     warn(name + ": clamped " + std::to_string(negative) +
-         " texel(s) with negative components to 0");
+         " texel(s) with negative components to 0" + numbers);
+  }
   return EnvMap(map.width, map.height, std::move(rgb), name);
 }
 

@@ -354,6 +354,39 @@ SceneStudy scene_study(const SceneSamples& samples, std::vector<SceneEntry> maps
   return study;
 }
 
+std::vector<MapAgreement> map_agreements(const Eigen::MatrixXd& within, std::size_t maps) {
+  if (Eigen::Index(maps) > within.rows() || within.rows() != within.cols())
+    throw std::invalid_argument("map_agreements: more maps than the agreement matrix has");
+  std::vector<MapAgreement> result(maps);
+  for (std::size_t i = 0; i < maps; ++i) {
+    for (std::size_t j = 0; j < maps; ++j) {
+      if (i == j) continue;
+      const double a = std::min(within(Eigen::Index(i), Eigen::Index(j)),
+                                within(Eigen::Index(j), Eigen::Index(i)));
+      if (a >= kAgreeingWithin) ++result[i].agreeing;
+      result[i].mean += a / double(maps - 1);
+    }
+  }
+  return result;
+}
+
+std::size_t most_representative(const std::vector<MapAgreement>& maps,
+                                const std::vector<double>& r2) {
+  if (maps.empty() || r2.size() != maps.size())
+    throw std::invalid_argument("most_representative: one R^2 per map, at least one map");
+  std::size_t most = 0;
+  for (const MapAgreement& m : maps) most = std::max(most, m.agreeing);
+  double best_mean = -1;
+  for (const MapAgreement& m : maps)
+    if (m.agreeing == most) best_mean = std::max(best_mean, m.mean);
+  std::size_t best = maps.size();
+  for (std::size_t i = 0; i < maps.size(); ++i)
+    if (maps[i].agreeing == most && maps[i].mean >= best_mean - kMeanAgreementTie &&
+        (best == maps.size() || r2[i] > r2[best]))
+      best = i;
+  return best;
+}
+
 SpacingStudy spacing_study(Renderer& renderer, const MaterialFamily& family,
                            const std::vector<double>& fine, Baseline baseline, int count) {
   const FineSweep sweep = measure_fine(renderer, family, fine, baseline, count);

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -41,6 +42,20 @@ inline CliResult run_cli(const std::string& args) {
   r.err = read_text(err_path);
   std::filesystem::remove(err_path);
   return r;
+}
+
+// The database the CLI suites query: CTest's shared test-profile database (BRDFNAV_TEST_DATABASE),
+// or, run alone, one the CLI builds under `root`. Empty when that build fails (its error is in
+// `error`).
+inline std::filesystem::path suite_database(const std::filesystem::path& root, std::string& error) {
+  if (const char* shared = std::getenv("BRDFNAV_TEST_DATABASE"); shared && *shared) return shared;
+  const std::filesystem::path db = root / "db";
+  const CliResult r = run_cli("precompute --profile test --out " + db.string());
+  if (r.exit_code != 0) {
+    error = r.err;
+    return {};
+  }
+  return db;
 }
 
 }  // namespace brdfnav::test

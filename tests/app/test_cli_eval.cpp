@@ -95,6 +95,34 @@ TEST(CliHelp, EveryCommandHasHelp) {
   }
 }
 
+// A command line that does not parse: one "brdfnav: error:" line naming what is wrong, then the
+// way to the help, and exit status 2 (CLI11's own codes were 105 to 109).
+TEST(CliHelp, UsageErrorsNameTheProblemAndExitWith2) {
+  const struct {
+    std::string args, phrase;
+  } cases[] = {
+      {"", "brdfnav: error: a command is required"},
+      {"rendr --material ward", "brdfnav: error: unknown command 'rendr' (did you mean 'render'?)"},
+      {"frobnicate", "brdfnav: error: unknown command 'frobnicate'; commands: eval,"},
+      {"render --out x.exr", "brdfnav: error: --material"},
+      {"render --material ward --res abc --out x.exr", "brdfnav: error: --res"},
+      {"eval --material ward --wi 0,0,1 --wo 0,0,1 --bogus", "brdfnav: error: "},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.args);
+    const auto r = run_cli(c.args);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(c.phrase), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("Run 'brdfnav --help'"), std::string::npos) << r.err;
+  }
+  // A material name that is no file, model or spec says so (it said "unknown model 'chosen'").
+  const auto r = run_cli("eval --material chosen --wi 0,0,1 --wo 0,0,1");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("brdfnav: error: chosen: no such material file, and not a model name"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST(CliModels, DocsAreGeneratedFromTheTables) {
   const auto r = run_cli("models --markdown");
   ASSERT_EQ(r.exit_code, 0) << r.err;

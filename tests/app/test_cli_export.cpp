@@ -71,13 +71,9 @@ class CliExport : public ::testing::Test {
     root_ = fs::temp_directory_path() / ("brdfnav_cli_export_" + std::to_string(::getpid()));
     fs::remove_all(root_);
     fs::create_directories(root_);
-    if (const char* shared = std::getenv("BRDFNAV_TEST_DATABASE"); shared && *shared) {
-      db_ = shared;
-      return;
-    }
-    db_ = root_ / "db";
-    const CliResult r = run_cli("precompute --profile test --out " + db_.string());
-    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::string error;
+    db_ = suite_database(root_, error);
+    ASSERT_FALSE(db_.empty()) << error;
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
   static fs::path file(const std::string& name) { return root_ / name; }

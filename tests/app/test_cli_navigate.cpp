@@ -23,13 +23,9 @@ class CliNavigate : public ::testing::Test {
     root_ = fs::temp_directory_path() / ("brdfnav_cli_navigate_" + std::to_string(::getpid()));
     fs::remove_all(root_);
     fs::create_directories(root_);
-    if (const char* shared = std::getenv("BRDFNAV_TEST_DATABASE"); shared && *shared) {
-      db_ = shared;
-      return;
-    }
-    db_ = root_ / "db";
-    const CliResult r = run_cli("precompute --profile test --out " + db_.string());
-    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::string error;
+    db_ = suite_database(root_, error);
+    ASSERT_FALSE(db_.empty()) << error;
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
   static const fs::path& db() { return db_; }
@@ -54,7 +50,8 @@ TEST_F(CliNavigate, NeighborsPrintsOneYamlListWithTheStableKeys) {
   for (const YAML::Node& item : list) {
     std::set<std::string> keys;
     for (const auto& kv : item) keys.insert(kv.first.as<std::string>());
-    EXPECT_EQ(keys, (std::set<std::string>{"tab", "label", "distance", "flags", "material"}));
+    EXPECT_EQ(keys, (std::set<std::string>{"tab", "label", "words", "change", "opposite",
+                                           "distance", "flags", "material"}));
     tabs.insert(item["tab"].as<std::string>());
     EXPECT_GT(item["distance"].as<double>(), 0);
     EXPECT_TRUE(item["flags"].IsSequence());
@@ -146,6 +143,25 @@ TEST_F(CliNavigate, RejectsBadInputNamingIt) {
 
 // A contact sheet per tab through OCIO: a PNG of the documented layout (contact_sheet.h); a bad
 // view or tab is rejected by name and leaves no file.
+// bench fidelity renders what the navigator offers and prints, per model, the thumbnails'
+// errors and each tab's steps against eps, with the targets' verdicts.
+TEST_F(CliNavigate, BenchFidelityReportsEveryModelAndTab) {
+  CliResult r = run_cli("bench fidelity --db " + db().string() + " --materials 1 --radius 0.03");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("| model | images | median | worst | verdict |"), std::string::npos)
+      << r.out;
+  for (const ModelInfo& info : models()) {
+    const std::string model(info.name);
+    for (const char* tab : {"lobe", "diffuse", "specular", "models"})
+      EXPECT_NE(r.out.find("| " + model + " | " + tab + " | "), std::string::npos)
+          << model << " " << tab << "\n"
+          << r.out;
+  }
+  r = run_cli("bench fidelity --db " + db().string() + " --radius 0");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--radius"), std::string::npos) << r.err;
+}
+
 TEST_F(CliNavigate, VariationsWritesAContactSheetPerTab) {
   const std::string material = "--material ward:alpha_x=0.05,alpha_y=0.03,rho_d=0.1,rho_s=0.5";
   for (const char* tab : {"lobe", "diffuse", "specular", "models", "gallery"}) {

@@ -25,7 +25,7 @@ TEST(CliPrecompute, BuildsVerifiesAndRejectsACorruptDatabase) {
     EXPECT_NE(r.err.find(std::string("brdfnav: ") + phase), std::string::npos) << phase;
   EXPECT_FALSE(fs::exists(db.string() + ".partial"));
 
-  r = run_cli("db-info " + db.string());
+  r = run_cli("db-info --db " + db.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("profile: smoke"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("resolution: 8"), std::string::npos) << r.out;
@@ -39,7 +39,7 @@ TEST(CliPrecompute, BuildsVerifiesAndRejectsACorruptDatabase) {
   std::string bytes = read_text(table);
   bytes[bytes.size() - 1] ^= 0x40;
   std::ofstream(table, std::ios::binary) << bytes;
-  r = run_cli("db-info " + db.string());
+  r = run_cli("db-info --db " + db.string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("conversions/he_to_ward.f32: checksum mismatch"), std::string::npos)
       << r.err;

@@ -86,6 +86,25 @@ TEST(ServeApi, AnUnknownPathIs404AndTheRightMethods200) {
   EXPECT_EQ(call("POST", "/api/export", R"({"material": )" + kMaterial + "}").status, 200);
 }
 
+// A thumbnail is the exact render of its material unless a preview (the blend of the database's
+// images) is asked for: between grid nodes the two differ, and the exact one comes back the same
+// from the cache; a preview that is not a boolean is refused naming it.
+TEST(ServeApi, ThumbnailsAreExactUnlessAPreviewIsAskedFor) {
+  const std::string between =
+      R"({"material": {"model": "ward", "params": {"alpha_x": 0.0731, "alpha_y": 0.0417},)"
+      R"( "rho_d": [0.2, 0.2, 0.2], "rho_s": [0.5, 0.5, 0.5], "colorspace": "lin_rec709"})";
+  const ApiResponse exact = call("POST", "/api/thumbnail", between + "}");
+  ASSERT_EQ(exact.status, 200) << exact.body;
+  EXPECT_EQ(exact.content_type, "image/png");
+  const ApiResponse preview = call("POST", "/api/thumbnail", between + R"(, "preview": true})");
+  ASSERT_EQ(preview.status, 200) << preview.body;
+  EXPECT_NE(exact.body, preview.body);
+  EXPECT_EQ(call("POST", "/api/thumbnail", between + R"(, "preview": false})").body, exact.body);
+  const ApiResponse bad = call("POST", "/api/thumbnail", between + R"(, "preview": "yes"})");
+  EXPECT_EQ(bad.status, 400);
+  EXPECT_EQ(error_of(bad).rfind("preview: expected true or false", 0), 0u) << error_of(bad);
+}
+
 // The format of an export: yaml by default; a renderer's format needs a database with the ggx
 // model, which the fixture (built before it existed) lacks: the answer says so.
 TEST(ServeApi, TheExportsFormatIsCheckedAndARenderersNeedsGgx) {

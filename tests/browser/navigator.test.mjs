@@ -256,6 +256,50 @@ test('every tab offers its own variations', async () => {
   await selectTab('lobe');
 });
 
+test('the ring fits a 1024 px window: opposites face each other, nothing overlaps or is cut', async () => {
+  await page.setViewportSize({ width: 1024, height: 768 });
+  try {
+    for (const tab of ['diffuse', 'lobe', 'gallery']) {
+      await selectTab(tab);
+      const boxes = await page.locator('.variation').evaluateAll((buttons) => buttons.map((b) => {
+        const r = b.getBoundingClientRect();
+        const img = b.querySelector('img').getBoundingClientRect();
+        return { left: r.left, right: r.right, top: r.top, bottom: r.bottom, image: img.width,
+          x: (img.left + img.right) / 2, y: (img.top + img.bottom) / 2,
+          words: b.querySelector('.caption b').textContent, title: b.title };
+      }));
+      const c = await page.locator('#centre img').evaluate((img) => {
+        const r = img.getBoundingClientRect();
+        return { left: r.left, right: r.right, top: r.top, bottom: r.bottom, width: r.width };
+      });
+      assert.ok(c.width >= 256, `centre ${c.width} px`);
+      const mid = [(c.left + c.right) / 2, (c.top + c.bottom) / 2];
+      for (const [i, b] of boxes.entries()) {
+        assert.ok(b.image >= 160, `${tab} ${b.words}: ${b.image} px`);
+        assert.ok(b.left >= 0 && b.right <= 1024, `${tab} ${b.words}: ${b.left}..${b.right}`);
+        assert.doesNotMatch(b.words, /^(L[+-]|ab\+\d+|\w+[+-])$/, 'words, not labels');
+        assert.ok(b.title.length > b.words.length, `${tab} ${b.words}: tooltip '${b.title}'`);
+        // Neither on the centre's image nor on another variation.
+        const apart = (a, o) => a.right <= o.left || o.right <= a.left || a.bottom <= o.top ||
+          o.bottom <= a.top;
+        assert.ok(apart(b, c), `${tab} ${b.words} covers the centre`);
+        for (const o of boxes.slice(0, i)) assert.ok(apart(b, o), `${tab} ${b.words} / ${o.words}`);
+        // The images of offers i and i + n/2 mirror each other through the centre's image (the
+        // service's ring order).
+        if (tab !== 'gallery' && i < boxes.length / 2) {
+          const o = boxes[i + boxes.length / 2];
+          assert.ok(Math.abs((b.x + o.x) / 2 - mid[0]) < 2, `${tab} ${b.words} / ${o.words}`);
+          assert.ok(Math.abs((b.y + o.y) / 2 - mid[1]) < 2, `${tab} ${b.words} / ${o.words}`);
+        }
+      }
+    }
+    await shot('ring-1024');
+  } finally {
+    await page.setViewportSize({ width: 1400, height: 950 });
+  }
+  await selectTab('lobe');
+});
+
 test('Export YAML downloads the export of the current material', async () => {
   const current = await centre();
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export')]);
@@ -275,6 +319,8 @@ test('Export YAML downloads the export of the current material', async () => {
   }
   // The export is a material file for every other brdfnav command.
   await run(cli, ['eval', '--material', file, '--wi', '0,0.5,1', '--wo', '0.3,0,1']);
+  // The page confirms it.
+  assert.match(await page.textContent('#notice'), /^Exported brdfnav-\w+\.yaml/);
   await shot('exported');
 });
 
@@ -551,6 +597,13 @@ test('bad API requests get 400 naming the field, and the server keeps serving', 
   const png = await fetch(new URL('/api/thumbnail', url), { method: 'POST', body: body({ material: m }) });
   assert.equal(png.headers.get('content-type'), 'image/png');
   assert.equal(Buffer.from(await png.arrayBuffer()).subarray(1, 4).toString(), 'PNG');
+  // The server's log names each failure in words, whatever encoding the client accepted (fetch
+  // accepts gzip: the log once showed the compressed bytes).
+  const logged = await fetch(new URL('/api/neighbors', url), { method: 'POST',
+    headers: { 'Accept-Encoding': 'gzip, br' }, body: body({ material: m, radius: 0.02, tab: 'nope' }) });
+  assert.equal(logged.status, 400);
+  const serveLog = fs.readFileSync(path.join(artefacts, 'serve.log'), 'utf8');
+  assert.match(serveLog, /brdfnav: serve: POST \/api\/neighbors -> 400 \{"error":\s*"tab: unknown tab/);
 });
 
 // Raw sockets on the server's port, each with promises of its connection and first answer;

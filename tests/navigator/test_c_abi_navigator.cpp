@@ -57,7 +57,11 @@ void expect_list(const brdfnav_neighbors* list, const std::vector<Neighbor>& exp
     EXPECT_EQ(n.label, e.label);
     EXPECT_EQ(n.distance, e.distance);
     EXPECT_EQ(n.flags, (e.at_boundary ? BRDFNAV_NEIGHBOR_AT_BOUNDARY : 0u) |
-                           (e.clamped ? BRDFNAV_NEIGHBOR_CLAMPED : 0u));
+                           (e.clamped ? BRDFNAV_NEIGHBOR_CLAMPED : 0u) |
+                           (e.beyond_radius ? BRDFNAV_NEIGHBOR_BEYOND_RADIUS : 0u));
+    EXPECT_EQ(n.words, e.words);
+    EXPECT_EQ(n.change, e.change);
+    EXPECT_EQ(n.opposite, e.opposite);
     const ModelInfo& info = model_info(e.material.model);
     EXPECT_EQ(n.material.model, info.name);
     ASSERT_EQ(n.material.param_count, info.params.size());

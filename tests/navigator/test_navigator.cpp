@@ -13,8 +13,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include "colour.h"
+#include "ring.h"
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <thread>
 
@@ -81,6 +83,34 @@ void expect_on_sphere(const Case& c, const Neighbor& n, bool stopped) {
   }
 }
 
+// The ring contract (navigator.h): each offer's opposite is the offer with the opposite label,
+// each pair is i and i + n/2 when every offer has one, and every offer has words and a change.
+void expect_ring(const std::vector<Neighbor>& ring) {
+  const int n = static_cast<int>(ring.size());
+  bool all_paired = true;
+  for (int i = 0; i < n; ++i) {
+    const Neighbor& a = ring[i];
+    EXPECT_FALSE(a.words.empty()) << a.label;
+    EXPECT_FALSE(a.change.empty()) << a.label;
+    if (a.opposite < 0) {
+      all_paired = false;
+      continue;
+    }
+    ASSERT_LT(a.opposite, n) << a.label;
+    EXPECT_EQ(ring[a.opposite].opposite, i) << a.label;
+    EXPECT_EQ(nav::opposite_label(a.label), ring[a.opposite].label);
+  }
+  if (all_paired && n > 0)
+    for (int i = 0; i < n / 2; ++i) EXPECT_EQ(ring[i].opposite, i + n / 2) << ring[i].label;
+}
+
+// A tab's offers by label.
+std::map<std::string, Neighbor> by_label(const std::vector<Neighbor>& offers) {
+  std::map<std::string, Neighbor> out;
+  for (const Neighbor& n : offers) EXPECT_TRUE(out.emplace(n.label, n).second) << n.label;
+  return out;
+}
+
 TEST(Navigator, LobeNeighboursAreAtTheRadiusOrAtTheEndOfTheGrid) {
   for (const Case& c : cases(3, 1)) {
     SCOPED_TRACE(describe(c));
@@ -91,9 +121,17 @@ TEST(Navigator, LobeNeighboursAreAtTheRadiusOrAtTheEndOfTheGrid) {
       labels.insert(labels.end(), {std::string(p.name) + "+", std::string(p.name) + "-"});
     if (info.id == ModelId::ward) labels.insert(labels.end(), {"alpha+", "alpha-"});
     ASSERT_EQ(lobe.size(), labels.size());
-    for (std::size_t i = 0; i < lobe.size(); ++i) {
-      const Neighbor& n = lobe[i];
-      EXPECT_EQ(n.label, labels[i]);
+    expect_ring(lobe);
+    const std::map<std::string, Neighbor> found = by_label(lobe);
+    for (const std::string& label : labels) {
+      ASSERT_TRUE(found.contains(label)) << label;
+      const Neighbor& n = found.at(label);
+      // The table's words for the parameter's direction (Ward's alpha: "rougher" / "sharper").
+      const std::string name = label.substr(0, label.size() - 1);
+      const bool up = label.back() == '+';
+      for (const ParamSpec& p : info.params)
+        if (p.name == name) EXPECT_EQ(n.words, up ? p.more : p.less) << label;
+      if (name == "alpha") EXPECT_EQ(n.words, up ? "rougher" : "sharper");
       EXPECT_EQ(n.tab, Tab::lobe);
       EXPECT_FALSE(n.clamped);
       EXPECT_NO_THROW(validate(n.material));
@@ -179,8 +217,17 @@ void expect_colour_tab(const Case& c, Tab tab) {
   const Vec3 lab = lab_from_rec709(before);
   const std::vector<Neighbor> out = navigator().neighbors(c.material, c.radius, tab);
   ASSERT_EQ(out.size(), 10u);
+  expect_ring(out);
+  const std::map<std::string, Neighbor> found = by_label(out);
+  const char* words[] = {"lighter",        "darker",        "towards red",   "towards orange",
+                         "towards yellow", "towards lime",  "towards green", "towards teal",
+                         "towards blue",   "towards purple"};
   for (std::size_t i = 0; i < out.size(); ++i) {
-    const Neighbor& n = out[i];
+    const std::string label =
+        i < 2 ? (i == 0 ? "L+" : "L-") : "ab+" + std::to_string(45 * static_cast<int>(i - 2));
+    ASSERT_TRUE(found.contains(label)) << label;
+    const Neighbor& n = found.at(label);
+    EXPECT_EQ(n.words, words[i]);
     const Rgb& after = diffuse ? n.material.rho_d : n.material.rho_s;
     EXPECT_TRUE((after >= 0).all() && (after <= max).all()) << n.label;
     EXPECT_FALSE(n.at_boundary);
@@ -188,11 +235,9 @@ void expect_colour_tab(const Case& c, Tab tab) {
     const Vec3 step = lab_from_rec709(after) - lab;
     if (step.norm() < 1e-6) continue;  // clamped at once: no direction to check
     if (i < 2) {
-      EXPECT_EQ(n.label, i == 0 ? "L+" : "L-");
       EXPECT_GT(i == 0 ? step.x() : -step.x(), 0) << n.label;
     } else {
       const int degrees = 45 * static_cast<int>(i - 2);
-      EXPECT_EQ(n.label, "ab+" + std::to_string(degrees));
       const double angle = degrees * std::numbers::pi / 180;
       EXPECT_NEAR(step.x(), 0, 1e-6 * step.norm()) << n.label;
       EXPECT_NEAR(step.y() * std::sin(angle) - step.z() * std::cos(angle), 0, 1e-6 * step.norm())
@@ -213,9 +258,9 @@ TEST(Navigator, ColoursAtTheEdgeOfTheirRangeAreClamped) {
   Material m = default_material(ModelId::blinn_phong);
   m.rho_d = Rgb(0.98, 0.98, 0.98), m.rho_s = Rgb::Constant(0.2);
   const Case white{m, 0.05};
-  const std::vector<Neighbor> diffuse = navigator().neighbors(m, white.radius, Tab::diffuse);
-  EXPECT_TRUE(diffuse[0].clamped) << "L+ of near-white";
-  EXPECT_FALSE(diffuse[1].clamped) << "L- of near-white";
+  const auto diffuse = by_label(navigator().neighbors(m, white.radius, Tab::diffuse));
+  EXPECT_TRUE(diffuse.at("L+").clamped) << "L+ of near-white";
+  EXPECT_FALSE(diffuse.at("L-").clamped) << "L- of near-white";
   expect_colour_tab(white, Tab::diffuse);
   // Black: no other L and no hue is valid, so every neighbour but L+ is black itself (to the
   // bisection's resolution).
@@ -228,6 +273,27 @@ TEST(Navigator, ColoursAtTheEdgeOfTheirRangeAreClamped) {
   }
 }
 
+// The page starts from start_material() at radius 0.03 (app/serve_api.cpp), and the README's
+// example asks for this Ward material at 0.03: every lobe and colour direction has room to move.
+TEST(Navigator, TheStartAndTheReadmesMaterialHaveRoomInEveryDirection) {
+  const Navigator& nav = navigator();
+  // The smoke profile (the sanitized trees' database) has 2 to 4 nodes per axis: a step of 0.03
+  // leaves its grids.
+  if (nav.database().manifest().profile == "smoke")
+    GTEST_SKIP() << "the smoke profile's grids are too coarse for a radius of 0.03";
+  for (const Material& m :
+       {nav.start_material(),
+        parse_material_spec("ward:alpha_x=0.05,alpha_y=0.05,rho_d=0.2,rho_s=0.3")}) {
+    SCOPED_TRACE(format_material_spec(m));
+    for (Tab tab : {Tab::lobe, Tab::diffuse, Tab::specular})
+      for (const Neighbor& n : nav.neighbors(m, 0.03, tab)) {
+        EXPECT_FALSE(n.at_boundary) << n.label;
+        EXPECT_FALSE(n.clamped) << n.label;
+      }
+  }
+  EXPECT_EQ(nav.start_material().model, nav.database().manifest().grids.front().model);
+}
+
 TEST(Navigator, ModelsTabShowsWhatTheCurrentModelCannot) {
   const Navigator& nav = navigator();
   std::size_t shown = 0;
@@ -236,13 +302,27 @@ TEST(Navigator, ModelsTabShowsWhatTheCurrentModelCannot) {
     const std::vector<Neighbor> out = nav.neighbors(c.material, c.radius, Tab::models, 5);
     EXPECT_LE(out.size(), 5u);
     shown += out.size();
-    for (const Neighbor& n : out) {
+    expect_ring(out);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      const Neighbor& n = out[i];
       EXPECT_NE(n.material.model, c.material.model);
       EXPECT_EQ(n.label, model_info(n.material.model).name);
+      EXPECT_EQ(n.words, "as " + std::string(model_info(n.material.model).title));
       EXPECT_NEAR(nav.distance(c.material, n.material), n.distance, 1e-6 * c.radius);
-      // Its best fit in the current model is at least delta = 0.3 eps away.
-      const Material back = nav.convert(n.material, c.material.model);
-      EXPECT_GE(nav.distance(n.material, back), 0.3 * c.radius) << n.label;
+      // At eps from the current material; a model that cannot come that close offers its best
+      // fit, flagged, farther than eps.
+      if (n.beyond_radius) {
+        EXPECT_GE(n.distance, c.radius) << n.label;
+        EXPECT_TRUE(same(n.material, nav.convert(c.material, n.material.model))) << n.label;
+      } else if (!n.at_boundary) {
+        EXPECT_NEAR(n.distance, c.radius, 1e-3 * c.radius) << n.label;
+        // Its best fit in the current model is at least delta = 0.3 eps away.
+        const Material back = nav.convert(n.material, c.material.model);
+        EXPECT_GE(nav.distance(n.material, back), 0.3 * c.radius) << n.label;
+      }
+      // No two offers look the same: at least delta apart.
+      for (std::size_t j = 0; j < i; ++j)
+        EXPECT_GE(nav.distance(n.material, out[j].material), 0.3 * c.radius) << n.label;
     }
   }
   EXPECT_GT(shown, 0u) << "the filter dropped every neighbour of every case";
@@ -420,14 +500,19 @@ TEST(NavigationYaml, NeighbourListsReadBackWithTheirStableKeys) {
     const YAML::Node item = list[i];
     std::set<std::string> keys;
     for (const auto& kv : item) keys.insert(kv.first.as<std::string>());
-    EXPECT_EQ(keys, (std::set<std::string>{"tab", "label", "distance", "flags", "material"}));
+    EXPECT_EQ(keys, (std::set<std::string>{"tab", "label", "words", "change", "opposite",
+                                           "distance", "flags", "material"}));
     EXPECT_EQ(item["tab"].as<std::string>(), tab_name(all[i].tab));
     EXPECT_EQ(item["label"].as<std::string>(), all[i].label);
+    EXPECT_EQ(item["words"].as<std::string>(), all[i].words);
+    EXPECT_EQ(item["change"].as<std::string>(), all[i].change);
+    EXPECT_EQ(item["opposite"].as<int>(), all[i].opposite);
     EXPECT_EQ(item["distance"].as<double>(), all[i].distance);
     ASSERT_TRUE(item["flags"].IsSequence());
     std::vector<std::string> flags;
     if (all[i].at_boundary) flags.push_back("at_boundary");
     if (all[i].clamped) flags.push_back("clamped");
+    if (all[i].beyond_radius) flags.push_back("beyond_radius");
     some_flag |= !flags.empty();
     EXPECT_EQ(item["flags"].as<std::vector<std::string>>(), flags);
     EXPECT_FALSE(item["material"]["brdfnav_material"]);

@@ -3,8 +3,9 @@
 // resolution and render quality, and compares the exact cube-root RMS distance (image_distance)
 // with eps. The deviations depend on the database (grid density, coefficients kept, colour-ratio
 // nodes) and on the renderer's accuracy; BRDFNAV_TEST_DATABASE=DIR measures another database
-// than the test profile's. The models tab is at eps from the current material's best fit, not
-// from the material (docs/NAVIGATION.md), and the gallery at no set distance.
+// than the test profile's. The gallery is at no set distance; the models tab, at eps from the
+// current material where the other model can come that close, is measured by `brdfnav bench
+// fidelity` (docs/NAVIGATION.md).
 #include "navigator/navigator_fixture.h"
 
 #include <brdfnav/core/statistics.h>

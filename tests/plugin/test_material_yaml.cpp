@@ -149,6 +149,19 @@ TEST_F(MaterialYamlFiles, LoadMaterialTellsFilesFromSpecs) {
   }
   EXPECT_THROW(read_material_yaml(dir_ / "missing.yml"), MaterialFileError);
   EXPECT_THROW(read_material_yaml(dir_), MaterialFileError);
+  // A name that is neither a file, a model nor a spec (a file name without its .yaml, a path) is
+  // reported as the missing file it most likely is, with what would have been accepted.
+  for (const std::string& name : {std::string("chosen"), (dir_ / "chosen").string()}) {
+    try {
+      load_material(name);
+      FAIL() << name << ": no error";
+    } catch (const MaterialFileError& e) {
+      EXPECT_THAT(e.what(), HasSubstr(name + ": no such material file, and not a model name"));
+      EXPECT_THAT(e.what(), HasSubstr("models: blinn_phong, ward"));
+    }
+  }
+  // A model name alone is a spec with the model's defaults.
+  EXPECT_EQ(load_material("he").model, ModelId::he);
 }
 
 TEST_F(MaterialYamlFiles, ErrorsInAFileNameItsPath) {

@@ -1,5 +1,7 @@
-// What the renderer's tests share: the default environment, a constant one, channel means, a
-// concave mesh and the accuracy target.
+// What the renderer's tests share: interior.exr, a constant environment, channel means, a concave
+// mesh and the accuracy target. interior.exr is a specific map here, not the default one (which
+// is kDefaultEnvPath): its lamps, about 100 texels holding 40% of its power, are the hardest case
+// of the renderer's hot texels, which these tests measure.
 #pragma once
 
 #include <brdfnav/precompute/render_accuracy.h>

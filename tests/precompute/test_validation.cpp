@@ -111,6 +111,38 @@ TEST(Validation, CompareDistancesFindsTheScaleAndTheAgreement) {
   EXPECT_LT(compare_distances(ref, off, 0.2).within, 1.0);
 }
 
+// Four maps, then a fifth entry (the constant environment) that is not counted. Map 0 agrees
+// with 1 and 2 one way only (0.80 the other way); 1, 2 and 3 agree with one another both ways.
+TEST(Validation, MapAgreementsCountBothWaysAndTheRuleBreaksTies) {
+  Eigen::MatrixXd within(5, 5);
+  within << 1.00, 0.90, 0.95, 0.50, 0.99,  //
+      0.80, 1.00, 0.90, 0.86, 0.99,        //
+      0.80, 0.92, 1.00, 0.88, 0.99,        //
+      0.60, 0.90, 0.85, 1.00, 0.99,        //
+      0.99, 0.99, 0.99, 0.99, 1.00;
+  const std::vector<MapAgreement> maps = map_agreements(within, 4);
+  ASSERT_EQ(maps.size(), 4u);
+  EXPECT_EQ(maps[0].agreeing, 0u);  // min(0.90, 0.80), min(0.95, 0.80), min(0.50, 0.60)
+  EXPECT_NEAR(maps[0].mean, (0.80 + 0.80 + 0.50) / 3, 1e-12);
+  EXPECT_EQ(maps[1].agreeing, 2u);
+  EXPECT_NEAR(maps[1].mean, (0.80 + 0.90 + 0.86) / 3, 1e-12);
+  EXPECT_EQ(maps[2].agreeing, 2u);  // 0.85 counts: at least kAgreeingWithin
+  EXPECT_NEAR(maps[2].mean, (0.80 + 0.90 + 0.85) / 3, 1e-12);
+  EXPECT_EQ(maps[3].agreeing, 2u);
+  EXPECT_NEAR(maps[3].mean, (0.50 + 0.86 + 0.85) / 3, 1e-12);
+  // Maps 1 to 3 agree with two others; 1 and 2 have the highest means (0.853, 0.850: within
+  // kMeanAgreementTie), 3 is 0.117 lower. Between 1 and 2, the straighter Figure 2 decides,
+  // and a map outside the tie does not win by its R^2.
+  EXPECT_EQ(most_representative(maps, {0.99, 0.87, 0.92, 0.99}), 2u);
+  EXPECT_EQ(most_representative(maps, {0.99, 0.93, 0.92, 0.99}), 1u);
+  // A map agreeing with more others wins whatever its mean.
+  std::vector<MapAgreement> more = maps;
+  more[3].agreeing = 3;
+  EXPECT_EQ(most_representative(more, {0.99, 0.93, 0.92, 0.5}), 3u);
+  EXPECT_THROW(map_agreements(within, 6), std::invalid_argument);
+  EXPECT_THROW(most_representative(maps, {0.9}), std::invalid_argument);
+}
+
 TEST(Validation, TruncatedDistanceKeepsTheFirstCoefficientsOfEachChannel) {
   Eigen::VectorXf a(6), b(6);
   a << 1, 5, 2, 7, 3, 9;  // channels (1, 5), (2, 7), (3, 9)

@@ -48,13 +48,21 @@ typedef enum brdfnav_tab {
 /* brdfnav_neighbor.flags */
 #define BRDFNAV_NEIGHBOR_AT_BOUNDARY 1u /* a parameter reached its range's end before radius */
 #define BRDFNAV_NEIGHBOR_CLAMPED 2u     /* the colour reached its valid range's end before radius */
+#define BRDFNAV_NEIGHBOR_BEYOND_RADIUS \
+  4u /* models tab: the model's best fit is farther than radius */
 
+/* A list holds a tab's offers in ring order: each pair of opposite directions as i and i + n/2
+ * when every offer has its opposite, so that offer i drawn at angle 2 pi i / n faces its
+ * opposite across the current material. */
 typedef struct brdfnav_neighbor {
   brdfnav_tab tab;
   const char* label;
   double distance;           /* embedded distance from the current material */
   unsigned flags;            /* BRDFNAV_NEIGHBOR_* bits */
   brdfnav_material material; /* every parameter given; pointers into the list */
+  const char* words;         /* for an artist: "sharper", "lighter", "towards red", ... */
+  const char* change;        /* the parameter change: "alpha_x 0.1 -> 0.0707" */
+  int opposite;              /* index of the opposite offer in the list, -1 for none */
 } brdfnav_neighbor;
 
 typedef struct brdfnav_navigator brdfnav_navigator; /* opaque */

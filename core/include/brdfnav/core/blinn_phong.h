@@ -14,8 +14,18 @@ struct BlinnPhong {
   static constexpr std::string_view kTitle = "Blinn-Phong";
   static constexpr bool kGrey = true;  // eval() is the same in every channel
   static constexpr std::array<ParamSpec, 1> kParams{{
-      {"n", "1", "exponent of cos(theta_h); larger is sharper", 0.0, 1e6, 100.0, 2.0, 80000.0, 15,
-       Scale::log},
+      {.name = "n",
+       .unit = "1",
+       .description = "exponent of cos(theta_h); larger is sharper",
+       .valid_min = 0.0,
+       .valid_max = 1e6,
+       .default_value = 100.0,
+       .grid_min = 2.0,
+       .grid_max = 80000.0,
+       .grid_count = 15,
+       .scale = Scale::log,
+       .more = "sharper",
+       .less = "rougher"},
   }};
 
   double n;

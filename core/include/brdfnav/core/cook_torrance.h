@@ -15,9 +15,30 @@ struct CookTorrance {
   static constexpr std::string_view kTitle = "Cook-Torrance";
   static constexpr bool kGrey = true;  // eval() is the same in every channel
   static constexpr std::array<ParamSpec, 2> kParams{{
-      {"f0", "1", "Fresnel reflectance at normal incidence (Schlick)", 0.0, 1.0, 0.04, 0.01, 1.0,
-       11, Scale::log},
-      {"m", "1", "Beckmann RMS slope", 1e-4, 1.5, 0.1, 0.005, 0.7, 13, Scale::log},
+      {.name = "f0",
+       .unit = "1",
+       .description = "Fresnel reflectance at normal incidence (Schlick)",
+       .valid_min = 0.0,
+       .valid_max = 1.0,
+       .default_value = 0.04,
+       .grid_min = 0.01,
+       .grid_max = 1.0,
+       .grid_count = 11,
+       .scale = Scale::log,
+       .more = "more reflective face-on",
+       .less = "reflective at grazing only"},
+      {.name = "m",
+       .unit = "1",
+       .description = "Beckmann RMS slope",
+       .valid_min = 1e-4,
+       .valid_max = 1.5,
+       .default_value = 0.1,
+       .grid_min = 0.005,
+       .grid_max = 0.7,
+       .grid_count = 13,
+       .scale = Scale::log,
+       .more = "rougher",
+       .less = "sharper"},
   }};
 
   double f0, m;

@@ -30,10 +30,30 @@ struct Ggx {
   // Below alpha_x alpha_y = 1e-7 Cycles treats the lobe as a mirror, above 1 it clamps alpha:
   // the valid range keeps every material one that Cycles renders as written.
   static constexpr std::array<ParamSpec, 2> kParams{{
-      {"alpha_x", "1", "roughness along the tangent x (Cycles: Roughness^2)", 1e-3, 1.0, 0.1, 0.01,
-       1.0, 13, Scale::log},
-      {"alpha_y", "1", "roughness along the bitangent y (alpha_x for an isotropic lobe)", 1e-3, 1.0,
-       0.1, 0.01, 1.0, 13, Scale::log},
+      {.name = "alpha_x",
+       .unit = "1",
+       .description = "roughness along the tangent x (Cycles: Roughness^2)",
+       .valid_min = 1e-3,
+       .valid_max = 1.0,
+       .default_value = 0.1,
+       .grid_min = 0.01,
+       .grid_max = 1.0,
+       .grid_count = 13,
+       .scale = Scale::log,
+       .more = "stretched along x",
+       .less = "sharper along x"},
+      {.name = "alpha_y",
+       .unit = "1",
+       .description = "roughness along the bitangent y (alpha_x for an isotropic lobe)",
+       .valid_min = 1e-3,
+       .valid_max = 1.0,
+       .default_value = 0.1,
+       .grid_min = 0.01,
+       .grid_max = 1.0,
+       .grid_count = 13,
+       .scale = Scale::log,
+       .more = "stretched along y",
+       .less = "sharper along y"},
   }};
 
   double alpha_x, alpha_y;

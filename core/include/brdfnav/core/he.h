@@ -15,9 +15,43 @@ struct He {
   static constexpr std::string_view kName = "he";
   static constexpr std::string_view kTitle = "He et al.";
   static constexpr std::array<ParamSpec, 3> kParams{{
-      {"sigma", "um", "RMS surface height", 1e-3, 10.0, 0.16, 0.02, 2.56, 8, Scale::log},
-      {"tau", "um", "surface autocorrelation length", 0.1, 500.0, 8.0, 2.0, 128.0, 9, Scale::log},
-      {"eta", "1", "real refractive index", 1.01, 20.0, 1.5, 1.2, 9.0, 5, Scale::log, kEtaNodes},
+      {.name = "sigma",
+       .unit = "um",
+       .description = "RMS surface height",
+       .valid_min = 1e-3,
+       .valid_max = 10.0,
+       .default_value = 0.16,
+       .grid_min = 0.02,
+       .grid_max = 2.56,
+       .grid_count = 8,
+       .scale = Scale::log,
+       .more = "rougher",
+       .less = "glossier"},
+      {.name = "tau",
+       .unit = "um",
+       .description = "surface autocorrelation length",
+       .valid_min = 0.1,
+       .valid_max = 500.0,
+       .default_value = 8.0,
+       .grid_min = 2.0,
+       .grid_max = 128.0,
+       .grid_count = 9,
+       .scale = Scale::log,
+       .more = "sharper",
+       .less = "blurrier"},
+      {.name = "eta",
+       .unit = "1",
+       .description = "real refractive index",
+       .valid_min = 1.01,
+       .valid_max = 20.0,
+       .default_value = 1.5,
+       .grid_min = 1.2,
+       .grid_max = 9.0,
+       .grid_count = 5,
+       .scale = Scale::log,
+       .nodes = kEtaNodes,
+       .more = "more reflective",
+       .less = "less reflective"},
   }};
   // Wavelengths (micrometres) of the R, G, B channels.
   static constexpr std::array<double, 3> kLambda{0.645, 0.526, 0.444};
@@ -76,19 +110,19 @@ struct He {
 
 // The sum over m in He's distribution D (without the pi^2 tau^2 / (4 lambda^2) prefactor), per
 // channel, with t = pi^2 tau^2 vxy^2 / lambda^2, and the factors that eval() tabulates. Exposed
-// so that tests can compare the tables with the exact forms and the series with its
-// rough-surface limit inside the blend range.
+// so that tests can compare the tables with the exact forms.
 namespace he_detail {
-// Blend range of g: the series below kBlendLo, the rough limit above kBlendHi.
-inline constexpr double kBlendLo = 14.0;
-inline constexpr double kBlendHi = 22.0;
-// sum_{m>=1} exp(-g) g^m / (m! m) exp(-t / m) over m <= 64, to a relative 1e-10; a sum below
-// 1e-14 of its value at t = 0 (the peak over directions) may come back as 0. Channels with
-// g <= 0 give 0. The exact reference for the tables that eval() uses (tests compare them).
+// sum_{m>=1} exp(-g) g^m / (m! m) exp(-t / m), summed term by term in log space outward from its
+// largest term (near the Poisson mode m ~ g, further up in the lobe's tail) until the terms fall
+// below exp(-30) of it: to a relative 1e-11 for g up to 1e6 (0 only where it underflows).
+// Channels with g <= 0 give 0. About 16 sqrt(g) + 10 terms, a few logs and an exp each (not meant
+// for g beyond ~1e8): the exact reference for the table that eval() uses (tests compare them).
 Rgb series_sum(const Rgb& g, const Rgb& t);
-// The same sum interpolated from a table (core/src/he_tables.cpp) for 0 < g <= kBlendHi, to a
-// relative 1e-5 where the sum is above 1e-8 of its value at t = 0, to 1e-14 of that value
-// elsewhere; what eval() uses.
+// The series table's rows are uniform in ln g from g = 0.01 to here (0.01 e^7.5) and beyond it in
+// (kTableRoughFrom / g)^(1/4), down to 0 (g = infinity) at the last row (core/src/he_tables.cpp).
+inline constexpr double kTableRoughFrom = 18.08042414456063;
+// The same sum interpolated from that table for every g > 0, to a relative 1e-5 where the sum is
+// above 1e-8 of its value at t = 0, to 1e-13 of that value elsewhere; what eval() uses.
 Rgb tabulated_series_sum(const Rgb& g, const Rgb& t);
 
 // Exact and tabulated forms of the other costly factors: the mirror term and sampling use the
@@ -111,12 +145,6 @@ Shadowing tabulated_shadowing(double a);
 // interpolated (Newton beyond the table).
 double sigma0_ratio(double y);
 double tabulated_sigma0_ratio(double y);
-
-// The large-g limit exp(-t / g) / g.
-Rgb rough_limit_sum(const Rgb& g, const Rgb& t);
-// tabulated_series_sum below kBlendLo, rough_limit_sum above kBlendHi, a smoothstep blend in
-// between.
-Rgb distribution_sum(const Rgb& g, const Rgb& t);
 }  // namespace he_detail
 
 }  // namespace brdfnav

@@ -21,9 +21,31 @@ struct Lafortune {
   static constexpr std::string_view kTitle = "Lafortune";
   static constexpr bool kGrey = true;  // eval() is the same in every channel
   static constexpr std::array<ParamSpec, 2> kParams{{
-      {"cz", "1", "z weight of the lobe axis; 1/sqrt(3) is a Phong lobe around the mirror", 0.0,
-       1.0, 0.57735026918962573, 0.0, 1.0, 14, Scale::linear, kCzNodes},
-      {"n", "1", "lobe exponent; larger is sharper", 0.0, 1e6, 100.0, 2.0, 16384.0, 13, Scale::log},
+      {.name = "cz",
+       .unit = "1",
+       .description = "z weight of the lobe axis; 1/sqrt(3) is a Phong lobe around the mirror",
+       .valid_min = 0.0,
+       .valid_max = 1.0,
+       .default_value = 0.57735026918962573,
+       .grid_min = 0.0,
+       .grid_max = 1.0,
+       .grid_count = 14,
+       .scale = Scale::linear,
+       .nodes = kCzNodes,
+       .more = "highlight towards the normal",
+       .less = "highlight towards grazing"},
+      {.name = "n",
+       .unit = "1",
+       .description = "lobe exponent; larger is sharper",
+       .valid_min = 0.0,
+       .valid_max = 1e6,
+       .default_value = 100.0,
+       .grid_min = 2.0,
+       .grid_max = 16384.0,
+       .grid_count = 13,
+       .scale = Scale::log,
+       .more = "sharper",
+       .less = "rougher"},
   }};
 
   double cz, n, cxy, inv_max_c;

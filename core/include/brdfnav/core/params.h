@@ -25,6 +25,10 @@ struct ParamSpec {
   int grid_count;
   Scale scale;
   std::span<const double> nodes = {};  // explicit, increasing grid nodes (overrides min/max/count)
+  // What an increase and a decrease look like, in an artist's words ("rougher", "sharper"): the
+  // navigator names its lobe variations with them.
+  std::string_view more = {};
+  std::string_view less = {};
 };
 
 // The grid nodes of one parameter, increasing.

@@ -15,9 +15,30 @@ struct Ward {
   static constexpr std::string_view kTitle = "Ward (anisotropic)";
   static constexpr bool kGrey = true;  // eval() is the same in every channel
   static constexpr std::array<ParamSpec, 2> kParams{{
-      {"alpha_x", "1", "RMS slope along the tangent x", 1e-4, 1.0, 0.1, 0.005, 0.5, 15, Scale::log},
-      {"alpha_y", "1", "RMS slope along the bitangent y", 1e-4, 1.0, 0.1, 0.005, 0.5, 15,
-       Scale::log},
+      {.name = "alpha_x",
+       .unit = "1",
+       .description = "RMS slope along the tangent x",
+       .valid_min = 1e-4,
+       .valid_max = 1.0,
+       .default_value = 0.1,
+       .grid_min = 0.005,
+       .grid_max = 0.5,
+       .grid_count = 15,
+       .scale = Scale::log,
+       .more = "stretched along x",
+       .less = "sharper along x"},
+      {.name = "alpha_y",
+       .unit = "1",
+       .description = "RMS slope along the bitangent y",
+       .valid_min = 1e-4,
+       .valid_max = 1.0,
+       .default_value = 0.1,
+       .grid_min = 0.005,
+       .grid_max = 0.5,
+       .grid_count = 15,
+       .scale = Scale::log,
+       .more = "stretched along y",
+       .less = "sharper along y"},
   }};
 
   double alpha_x, alpha_y;

@@ -49,6 +49,10 @@ inline constexpr Tab kTabs[] = {Tab::lobe, Tab::diffuse, Tab::specular, Tab::mod
 std::string_view tab_name(Tab tab);
 std::optional<Tab> find_tab(std::string_view name);
 
+// One offer of a tab. neighbors() returns a tab's offers in ring order: each pair of opposite
+// directions as i and i + n/2 when every offer has its opposite (the lobe and colour tabs), so
+// that a front end placing offer i at angle 2 pi i / n puts each pair on one line through the
+// current material; offers without an opposite (models, gallery) after the pairs.
 struct Neighbor {
   Tab tab;
   // lobe: "<param>+" / "<param>-" (and Ward's "alpha+" / "alpha-", both slopes by one factor);
@@ -62,6 +66,14 @@ struct Neighbor {
   // The colour left the valid range (rho_d in [0, 1], rho_s in [0, 10]) before distance eps
   // (colour tabs): the neighbour is the farthest valid colour in that direction.
   bool clamped = false;
+  // Models tab: the model cannot come within eps of the current material (its best fit is
+  // farther); the offer is that fit, at `distance`.
+  bool beyond_radius = false;
+  // What the offer looks like in an artist's words ("sharper", "lighter", "towards red",
+  // "as Ward (anisotropic)"), and the parameter change for a tooltip ("alpha_x 0.1 -> 0.0707").
+  std::string words = {}, change = {};
+  // The index of the opposite offer in the same list, -1 when it has none.
+  int opposite = -1;
 };
 
 // A material's best fit by another model (the database's conversion tables, interpolated).
@@ -96,6 +108,12 @@ class Navigator {
   // neighbour's distance is from that matte grey material.
   std::vector<Neighbor> gallery(int count = 8) const;
 
+  // Where an artist starts: the database's first model with each parameter at the middle of
+  // its database axis (in the parameter's scale), grey rho_d = 0.2 and rho_s = 0.3, a visible
+  // highlight. Its variations have room in every direction of every tab (a default material's
+  // dim rho_s = 0.04 sent most lobe walks to the grid's ends).
+  Material start_material() const;
+
   // The embedding of a material (its model must be in the database) and the distance through it.
   Eigen::VectorXf embed(const Material& m) const;
   double distance(const Material& a, const Material& b) const;
@@ -107,6 +125,9 @@ class Navigator {
 
  private:
   const ModelEmbedding& embedding_of(ModelId id) const;
+  // A tab's offers in the order they were found, without their words.
+  std::vector<Neighbor> tab_offers(const Material& current, double radius, Tab tab,
+                                   int clusters) const;
   std::vector<Neighbor> lobe_tab(const Material& current, double radius) const;
   std::vector<Neighbor> models_tab(const Material& current, double radius, int clusters) const;
   std::vector<Neighbor> gallery_tab(const Eigen::VectorXf& from, int count) const;

@@ -19,9 +19,13 @@
 
 namespace brdfnav {
 
-// The map the paper's metric uses unless told otherwise (Debian blender-data, CC0).
+// The map the paper's metric uses unless told otherwise (Debian blender-data, CC0): of Blender's
+// eight, the one whose distances agree best with the other seven's (Figure 3; `brdfnav validate`
+// names it; docs/VALIDATION.md, "Choosing the default map"). Its one definition: every default
+// of the CLI, the tests and the Slurm scripts (which ask `brdfnav precompute --help`) comes from
+// here.
 inline constexpr const char* kDefaultEnvPath =
-    "/usr/share/blender/datafiles/studiolights/world/interior.exr";
+    "/usr/share/blender/datafiles/studiolights/world/forest.exr";
 
 // The widest map load() reads: 16384 x 8192 is 1.5 GiB of float RGB, allocated before the pixels
 // are read, so a corrupt header that claims more is refused instead of exhausting memory.
@@ -43,12 +47,16 @@ struct EnvLoadOptions {
   bool sanitize = false;
 };
 
+// Negative texel components within this fraction of the map's mean are the ringing of filtered
+// or compressed maps (Blender's reach -0.4%): clamped to 0 without a warning.
+inline constexpr double kNegligibleNegative = 0.01;
+
 class EnvMap {
  public:
   // Reads the first three channels of subimage 0 as linear RGB. Throws EnvMapError when the file
   // is missing or unreadable, has fewer than 3 channels, is not exactly 2:1, is wider than
   // kMaxEnvWidth, or (without `sanitize`) holds NaN/Inf texels. Negative components are clamped
-  // to 0 with one warning.
+  // to 0, with one warning when one of them is below -kNegligibleNegative times the mean.
   static EnvMap load(const std::filesystem::path& path, const EnvLoadOptions& options = {},
                      const WarningSink& warn = warn_to_stderr);
 

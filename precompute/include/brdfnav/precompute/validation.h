@@ -132,6 +132,30 @@ struct SceneStudy {
 // one renderer (a map's largest allocation) need be alive.
 SceneStudy scene_study(const SceneSamples& samples, std::vector<SceneEntry> maps);
 
+// How representative each map is of the others (docs/VALIDATION.md, "Choosing the default map").
+// Two maps agree when each one's distances, scaled onto the other's, are within the tolerance on
+// at least kAgreeingWithin of the pairs: both ways, since an artist's steps measured under one
+// map should hold under the lighting they render in, and the other way round.
+inline constexpr double kAgreeingWithin = 0.85;  // the paper's "over 85%" (Figure 3)
+// Mean agreements this close count as equal: one percentage point, 3 of the 300 pairs of samples
+// per comparison, below what the image resolution alone moves them (64, 128, 256 px: up to 0.06).
+inline constexpr double kMeanAgreementTie = 0.01;
+
+struct MapAgreement {
+  std::size_t agreeing = 0;  // other maps it agrees with, both ways (>= kAgreeingWithin)
+  double mean = 0;           // mean over the other maps of min(within(i, j), within(j, i))
+};
+
+// For each of the first `maps` entries of `within` (SceneStudy::within; the natural maps, the
+// constant environment and the BRDF-space metric after them are not counted).
+std::vector<MapAgreement> map_agreements(const Eigen::MatrixXd& within, std::size_t maps);
+
+// The index of the most representative map: the most others agreeing; among those, the highest
+// mean agreement, means within kMeanAgreementTie of the highest counting as equal; among those,
+// the highest `r2` (Figure 2's R^2 of the cube-root metric under each map, same order).
+std::size_t most_representative(const std::vector<MapAgreement>& maps,
+                                const std::vector<double>& r2);
+
 // --- Figures 8 and 9: uniform spacing ----------------------------------------------------------
 
 // A one-parameter family of materials (e.g. Ward's alpha, Lafortune's cz at fixed n).

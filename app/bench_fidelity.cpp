@@ -1,0 +1,104 @@
+// `brdfnav bench fidelity`: renders what the navigator offers exactly, with the database's own
+// renderer settings (map, scene, resolution, quality), and compares
+// - each thumbnail the navigator would show (the centre and every offer) with the exact render
+//   of its material: the targets are 0.05 eps (median) and 0.25 eps (worst);
+// - each offer's exact distance from the current material with eps, per tab: the targets are
+//   5% (median) and 10% (90th percentile) of |rendered / eps - 1|. Offers flagged at a grid end,
+//   at a colour limit or beyond the radius do not aim at eps and are counted apart.
+#include "bench_fidelity.h"
+
+#include "bench_navigator.h"
+
+#include <brdfnav/core/statistics.h>
+#include <brdfnav/navigator/navigator.h>
+#include <brdfnav/navigator/thumbnails.h>
+#include <brdfnav/precompute/database.h>
+#include <brdfnav/precompute/render.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace brdfnav::cli {
+
+namespace {
+
+struct Errors {
+  std::vector<double> values;
+  int flagged = 0;
+};
+
+const char* verdict(bool met) {
+  return met ? "met" : "NOT met";
+}
+
+void print_steps(const std::string& model, Tab tab, const Errors& e) {
+  if (e.values.empty()) {
+    std::printf("| %s | %s | 0 | - | - | %d | - |\n", model.c_str(),
+                std::string(tab_name(tab)).c_str(), e.flagged);
+    return;
+  }
+  const double median = quantile(e.values, 0.5), p90 = quantile(e.values, 0.9);
+  std::printf("| %s | %s | %zu | %.1f%% | %.1f%% | %d | %s |\n", model.c_str(),
+              std::string(tab_name(tab)).c_str(), e.values.size(), 100 * median, 100 * p90,
+              e.flagged, verdict(median <= 0.05 && p90 <= 0.10));
+}
+
+}  // namespace
+
+void run_fidelity_bench(const FidelityBenchOptions& o) {
+  const Navigator navigator = Navigator::open(o.db);
+  const Database& db = navigator.database();
+  const Manifest& manifest = db.manifest();
+  const EnvMap env = load_database_env(db);
+  const Scene scene = Scene::load(manifest.scene);
+  RenderOptions render_options;
+  render_options.quality = make_profile(manifest.profile).quality;
+  Renderer renderer(env, scene, manifest.resolution, render_options);
+  const Thumbnails thumbnails(db, manifest.resolution);
+  const Tab tabs[] = {Tab::lobe, Tab::diffuse, Tab::specular, Tab::models};
+
+  std::map<std::string, std::vector<double>> thumbnail_errors;  // per model, in eps
+  std::map<std::pair<std::string, Tab>, Errors> steps;
+  const auto exact = [&](const Material& m) {
+    const Image image = renderer.render(m);
+    thumbnail_errors[std::string(model_info(m.model).name)].push_back(
+        image_distance(image, thumbnails.render(m)) / o.radius);
+    return image;
+  };
+  for (const Material& m : random_materials(db, o.materials)) {
+    const std::string model(model_info(m.model).name);
+    const Image current = exact(m);
+    for (Tab tab : tabs) {
+      Errors& e = steps[{model, tab}];
+      for (const Neighbor& n : navigator.neighbors(m, o.radius, tab)) {
+        const double rendered = image_distance(current, exact(n.material));
+        if (n.at_boundary || n.clamped || n.beyond_radius)
+          ++e.flagged;
+        else
+          e.values.push_back(std::abs(rendered / o.radius - 1));
+      }
+    }
+    std::fprintf(stderr, "brdfnav: bench fidelity: %s done\n", model.c_str());
+  }
+
+  std::printf("database %s (profile %s, %d px), eps %.4g, %d random materials per model\n\n",
+              o.db.c_str(), manifest.profile.c_str(), manifest.resolution, o.radius, o.materials);
+  std::printf("Thumbnails against exact renders (in eps; targets 0.05 median, 0.25 worst)\n\n");
+  std::printf("| model | images | median | worst | verdict |\n|---|---:|---:|---:|---|\n");
+  for (const auto& [model, errors] : thumbnail_errors) {
+    const double median = quantile(errors, 0.5), worst = quantile(errors, 1.0);
+    std::printf("| %s | %zu | %.3f | %.3f | %s |\n", model.c_str(), errors.size(), median, worst,
+                verdict(median <= 0.05 && worst <= 0.25));
+  }
+  std::printf(
+      "\nSteps: |rendered / eps - 1| of the unflagged offers (targets 5%% median, 10%% "
+      "90th percentile)\n\n");
+  std::printf("| model | tab | offers | median | p90 | flagged | verdict |\n");
+  std::printf("|---|---|---:|---:|---:|---:|---|\n");
+  for (const auto& [key, errors] : steps) print_steps(key.first, key.second, errors);
+}
+
+}  // namespace brdfnav::cli
