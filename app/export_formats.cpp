@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
 #include <utility>
 
@@ -88,41 +89,44 @@ std::string comment_lines(const std::string& text, const std::string& indent) {
 
 }  // namespace
 
+namespace {
+
+// Each format's name, content type and file extension, in ExportFormat order.
+struct FormatInfo {
+  std::string_view name, content_type, extension;
+};
+constexpr FormatInfo kFormats[] = {{"yaml", "application/yaml", ".yaml"},
+                                   {"materialx", "application/xml", ".mtlx"},
+                                   {"cycles", "application/json", ".json"}};
+
+const FormatInfo& info_of(ExportFormat format) {
+  return kFormats[static_cast<std::size_t>(format)];
+}
+
+}  // namespace
+
 const std::vector<std::string>& export_format_names() {
-  static const std::vector<std::string> names{"yaml", "materialx", "cycles"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const FormatInfo& f : kFormats) out.emplace_back(f.name);
+    return out;
+  }();
   return names;
 }
 
 ExportFormat parse_export_format(std::string_view name) {
-  if (name == "yaml") return ExportFormat::yaml;
-  if (name == "materialx") return ExportFormat::materialx;
-  if (name == "cycles") return ExportFormat::cycles;
+  for (std::size_t i = 0; i < std::size(kFormats); ++i)
+    if (kFormats[i].name == name) return static_cast<ExportFormat>(i);
   throw std::invalid_argument("format: '" + std::string(name) +
                               "' is not one of yaml, materialx, cycles");
 }
 
 std::string_view export_content_type(ExportFormat format) {
-  switch (format) {
-    case ExportFormat::materialx:
-      return "application/xml";
-    case ExportFormat::cycles:
-      return "application/json";
-    case ExportFormat::yaml:
-      break;
-  }
-  return "application/yaml";
+  return info_of(format).content_type;
 }
 
 std::string_view export_extension(ExportFormat format) {
-  switch (format) {
-    case ExportFormat::materialx:
-      return ".mtlx";
-    case ExportFormat::cycles:
-      return ".json";
-    case ExportFormat::yaml:
-      break;
-  }
-  return ".yaml";
+  return info_of(format).extension;
 }
 
 nlohmann::ordered_json material_json(const Material& m) {
@@ -138,7 +142,7 @@ nlohmann::ordered_json material_json(const Material& m) {
 }
 
 RendererExport make_renderer_export(const Navigator& navigator, const Material& chosen,
-                                    int resolution) {
+                                    ExportFormat format, int resolution) {
   validate(chosen);
   require_render_colorspace(chosen);
   RendererExport e;
@@ -162,6 +166,8 @@ RendererExport make_renderer_export(const Navigator& navigator, const Material& 
   e.resolution = resolution > 0 ? resolution : manifest.resolution;
   e.environment = manifest.env_path;
   e.scene = manifest.scene;
+  // A ggx material for Cycles, whose GGX it is: nothing to measure.
+  if (chosen.model == ModelId::ggx && format != ExportFormat::materialx) return e;
   const EnvMap env = EnvMap::load(manifest.env_path, {}, [](const std::string&) {});
   if (env.pixel_hash() != manifest.env_hash)
     throw std::runtime_error(manifest.env_path +
@@ -171,6 +177,7 @@ RendererExport make_renderer_export(const Navigator& navigator, const Material& 
   Renderer renderer(env, scene, e.resolution);
   const Image ggx = renderer.render(e.ggx);
   if (chosen.model != ModelId::ggx) e.residual = image_distance(renderer.render(chosen), ggx);
+  if (format != ExportFormat::materialx) return e;
   const Ggx lobe = std::get<Ggx>(make_lobe(ModelId::ggx, e.ggx.params));
   // MaterialX's image: rho_d I_diffuse + rho_s I_plain + rho_s^2 I_compensation.
   Image materialx =
@@ -271,7 +278,7 @@ std::string cycles_document(const RendererExport& e) {
 std::string export_document(const Navigator& navigator, const Material& chosen, ExportFormat format,
                             int resolution) {
   if (format == ExportFormat::yaml) return export_to_yaml(navigator, chosen);
-  const RendererExport e = make_renderer_export(navigator, chosen, resolution);
+  const RendererExport e = make_renderer_export(navigator, chosen, format, resolution);
   return format == ExportFormat::materialx ? materialx_document(e) : cycles_document(e);
 }
 

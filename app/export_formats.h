@@ -37,16 +37,18 @@ struct RendererExport {
   // scene, as the image metric (cube-root RMS):
   int resolution = 0;
   std::string environment, scene;
-  double residual = 0;           // chosen against ggx (0 when chosen is ggx)
+  double residual = 0;  // chosen against ggx (0 when chosen is ggx)
+  // ... for the MaterialX document only (else 0):
   double materialx_masking = 0;  // ggx against ggx with MaterialX's masking-shadowing alone
   double materialx = 0;          // ggx against ggx with all of MaterialX's terms
 };
 
-// The ggx form of `chosen` and the measures, rendered at `resolution` (0: the database's).
+// The ggx form of `chosen` and the measures, rendered at `resolution` (0: the database's), those
+// of MaterialX's terms for `format` materialx.
 // Throws NavigatorError when the database holds no ggx model, std::runtime_error when its
 // environment map is missing or no longer the one it was built with.
 RendererExport make_renderer_export(const Navigator& navigator, const Material& chosen,
-                                    int resolution);
+                                    ExportFormat format, int resolution);
 
 // A MaterialX 1.38 document with one surfacematerial (pbrlib nodes) and a comment that states
 // the residual and where MaterialX's definition differs from the ggx closure.
