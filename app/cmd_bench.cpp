@@ -137,9 +137,9 @@ void run_render_bench(const BenchOptions& o) {
     const double ms = time_image(renderer, s, o.repeats);
     std::string ratios;
     if (o.accuracy) {
-      // Ward's also as the precompute renders it, in its grid.
+      // Also as the precompute renders it, in its grid, where that differs (Ward's one pass).
       std::vector<Image> images{renderer.specular(make_lobe(s.model, s.params))};
-      if (s.model == ModelId::ward) images.push_back(ward_grid_image(renderer, s));
+      if (grid_images_differ(s.model)) images.push_back(grid_image(renderer, s));
       const auto results = measure_accuracy(images, reference, s);
       ratios = ratio_cell(results[0]);
       if (results.size() > 1) ratios += " (in its grid: " + ratio_cell(results[1]) + ")";

@@ -192,7 +192,7 @@ json model_json(const ModelInfo& info, const ParamGrid& grid) {
 json database_json(const Database& db) {
   const Manifest& m = db.manifest();
   return {{"dir", db.dir().string()},
-          {"manifest_sha1", file_sha1(db.dir() / "manifest.yaml")},
+          {"manifest_sha1", db.manifest_sha1()},
           {"profile", m.profile},
           {"resolution", m.resolution},
           {"scene", m.scene},

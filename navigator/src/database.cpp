@@ -123,6 +123,7 @@ Database Database::open(const fs::path& dir) {
   Database db;
   db.dir_ = dir;
   db.manifest_ = db::read_manifest(dir / db::kManifestFile);
+  db.manifest_sha1_ = file_sha1(dir / db::kManifestFile);
   const Manifest& m = db.manifest_;
   check_files(dir, m);
   check_image(dir / db::kDiffuseFile, m, Image());

@@ -39,7 +39,7 @@ void emit_provenance(YAML::Emitter& out, const Database& db) {
   const Manifest& m = db.manifest();
   out << YAML::Key << "provenance" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "database" << YAML::Value << YAML::DoubleQuoted << db.dir().string();
-  out << YAML::Key << "manifest_sha1" << YAML::Value << file_sha1(db.dir() / "manifest.yaml");
+  out << YAML::Key << "manifest_sha1" << YAML::Value << db.manifest_sha1();
   out << YAML::Key << "profile" << YAML::Value << YAML::DoubleQuoted << m.profile;
   out << YAML::Key << "resolution" << YAML::Value << m.resolution;
   out << YAML::Key << "scene" << YAML::Value << YAML::DoubleQuoted << m.scene;

@@ -212,7 +212,7 @@ class Job {
     }
     progress("render", ++done, total);
     for (const ProfileGrid& g : p_.grids) {
-      for (const std::vector<std::size_t>& nodes : render_units(g)) {
+      for (const std::vector<std::size_t>& nodes : grid_render_units(g.model, g.grid)) {
         std::vector<std::size_t> pending;
         const bool assigned = mine(unit++);
         for (std::size_t node : nodes) {
@@ -223,7 +223,7 @@ class Job {
             pending.push_back(node);
           }
         }
-        std::vector<Image> images = render_unit(renderer, g, pending);
+        std::vector<Image> images = renderer.grid_images(g.model, g.grid, pending);
         std::vector<PendingFile> files;
         for (std::size_t k = 0; k < pending.size(); ++k) {
           const Material m = node_material(g.model, g.grid.node_values(pending[k]));
@@ -236,41 +236,6 @@ class Job {
     writer.finish();
     log("render: " + std::to_string(total) + " images, " + std::to_string(reused) +
         (r_.shard_count > 1 ? " reused or left to other shards" : " reused"));
-  }
-
-  // The grid's nodes in units of work: Ward's whole grid, which renders in one pass
-  // (Renderer::ward_grid); else the nodes whose lobes shares_quadrature() (He's along eta,
-  // Cook-Torrance's along f0), which render together, else one node each; in the order of their
-  // first nodes.
-  static std::vector<std::vector<std::size_t>> render_units(const ProfileGrid& g) {
-    if (g.model == ModelId::ward) {
-      std::vector<std::size_t> all(g.grid.node_count());
-      for (std::size_t node = 0; node < all.size(); ++node) all[node] = node;
-      return {all};
-    }
-    std::vector<Lobe> lobes;
-    for (std::size_t node = 0; node < g.grid.node_count(); ++node)
-      lobes.push_back(make_lobe(g.model, g.grid.node_values(node)));
-    return quadrature_groups(lobes);
-  }
-
-  // The images of `pending`, nodes of one unit of the grid. Ward's come from the whole grid in
-  // one pass, whose images depend on its alphas: a resumed build renders them as a fresh one did.
-  static std::vector<Image> render_unit(Renderer& renderer, const ProfileGrid& g,
-                                        const std::vector<std::size_t>& pending) {
-    if (pending.empty()) return {};
-    if (g.model == ModelId::ward) {
-      std::vector<Image> grid = renderer.ward_grid(g.grid.axis(0), g.grid.axis(1));
-      std::vector<Image> images;
-      for (std::size_t node : pending) {
-        const std::vector<std::size_t> at = g.grid.multi_index(node);
-        images.push_back(std::move(grid[at[0] * g.grid.axis(1).size() + at[1]]));
-      }
-      return images;
-    }
-    std::vector<Lobe> lobes;
-    for (std::size_t node : pending) lobes.push_back(make_lobe(g.model, g.grid.node_values(node)));
-    return renderer.specular(lobes);
   }
 
   bool mine(std::size_t unit) const {

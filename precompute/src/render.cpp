@@ -364,6 +364,39 @@ std::vector<Image> Renderer::ward_grid(std::span<const double> alpha_x,
   return impl_->ward_grid_images(alpha_x, alpha_y);
 }
 
+bool grid_images_differ(ModelId model) {
+  return model == ModelId::ward;
+}
+
+std::vector<std::vector<std::size_t>> grid_render_units(ModelId model, const ParamGrid& grid) {
+  if (grid_images_differ(model)) {
+    std::vector<std::size_t> all(grid.node_count());
+    for (std::size_t node = 0; node < all.size(); ++node) all[node] = node;
+    return {all};
+  }
+  std::vector<Lobe> lobes;
+  for (std::size_t node = 0; node < grid.node_count(); ++node)
+    lobes.push_back(make_lobe(model, grid.node_values(node)));
+  return quadrature_groups(lobes);
+}
+
+std::vector<Image> Renderer::grid_images(ModelId model, const ParamGrid& grid,
+                                         std::span<const std::size_t> nodes) {
+  if (nodes.empty()) return {};
+  if (grid_images_differ(model)) {
+    std::vector<Image> all = ward_grid(grid.axis(0), grid.axis(1));
+    std::vector<Image> images;
+    for (std::size_t node : nodes) {
+      const std::vector<std::size_t> at = grid.multi_index(node);
+      images.push_back(std::move(all[at[0] * grid.axis(1).size() + at[1]]));
+    }
+    return images;
+  }
+  std::vector<Lobe> lobes;
+  for (std::size_t node : nodes) lobes.push_back(make_lobe(model, grid.node_values(node)));
+  return specular(lobes);
+}
+
 Image Renderer::render(const Material& material) {
   validate(material);
   require_render_colorspace(material);

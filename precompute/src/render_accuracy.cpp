@@ -75,15 +75,23 @@ std::vector<std::vector<AccuracyResult>> measure_accuracy(std::span<const Image>
   return results;
 }
 
-Image ward_grid_image(Renderer& renderer, const AccuracySetting& setting) {
-  if (setting.model != ModelId::ward) throw std::invalid_argument("ward_grid_image: not Ward");
-  const ParamGrid grid(Ward::kParams);
-  std::vector<double> axes[2];
-  for (std::size_t d = 0; d < 2; ++d) {
-    const double alpha = setting.params[d];
-    axes[d] = {std::min(grid.axis(d).front(), alpha), alpha, std::max(grid.axis(d).back(), alpha)};
+Image grid_image(Renderer& renderer, const AccuracySetting& setting) {
+  const ModelInfo& info = model_info(setting.model);
+  const ParamGrid table(info.params);
+  std::vector<std::vector<double>> axes;
+  std::vector<std::size_t> at;
+  for (std::size_t d = 0; d < table.dimensions(); ++d) {
+    const double value = setting.params[d];
+    std::vector<double> axis{table.axis(d).front(), value, table.axis(d).back()};
+    std::sort(axis.begin(), axis.end());
+    axis.erase(std::unique(axis.begin(), axis.end()), axis.end());
+    at.push_back(
+        static_cast<std::size_t>(std::find(axis.begin(), axis.end(), value) - axis.begin()));
+    axes.push_back(std::move(axis));
   }
-  return renderer.ward_grid(axes[0], axes[1])[4];  // (1, 1): the setting
+  const ParamGrid grid(info.params, std::move(axes));
+  const std::size_t node = grid.node_index(at);
+  return std::move(renderer.grid_images(setting.model, grid, std::span(&node, 1)).front());
 }
 
 }  // namespace brdfnav

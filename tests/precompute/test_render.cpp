@@ -147,6 +147,44 @@ TEST(Render, CookTorranceLobesAlongF0RenderTogetherToTheBit) {
     EXPECT_EQ(images[k].rgba, alone.specular(lobes[k]).rgba) << "lobe " << k;
 }
 
+// The renderer decides how a grid renders (grid_render_units, grid_images): its units cover every
+// node once; a node's image is Ward's one-pass grid image where grid_images_differ(), else
+// specular() of its lobe to the bit, in the order asked, whichever nodes are asked.
+TEST(Render, GridImagesAreTheRenderersChoiceOfPass) {
+  const Scene sphere = Scene::sphere();
+  Renderer renderer(interior(), sphere, 12), alone(interior(), sphere, 12);
+  for (const ModelInfo& info : models()) {
+    std::vector<std::vector<double>> axes;
+    for (std::size_t d = 0; d < info.params.size(); ++d) {
+      const ParamGrid table(info.params);
+      axes.push_back({table.axis(d).front(), table.axis(d).back()});
+    }
+    const ParamGrid grid(info.params, axes);
+    const auto units = grid_render_units(info.id, grid);
+    std::vector<int> seen(grid.node_count(), 0);
+    for (const auto& unit : units)
+      for (std::size_t node : unit) ++seen[node];
+    EXPECT_EQ(seen, std::vector<int>(grid.node_count(), 1)) << info.name;
+    const std::vector<std::size_t> asked{grid.node_count() - 1, 0};
+    const std::vector<Image> images = renderer.grid_images(info.id, grid, asked);
+    ASSERT_EQ(images.size(), asked.size());
+    for (std::size_t k = 0; k < asked.size(); ++k) {
+      if (grid_images_differ(info.id)) {
+        const std::vector<Image> pass = renderer.ward_grid(grid.axis(0), grid.axis(1));
+        const std::vector<std::size_t> at = grid.multi_index(asked[k]);
+        EXPECT_EQ(images[k].rgba, pass[at[0] * grid.axis(1).size() + at[1]].rgba) << info.name;
+      } else {
+        const Image own = alone.specular(make_lobe(info.id, grid.node_values(asked[k])));
+        EXPECT_EQ(images[k].rgba, own.rgba) << info.name << " node " << asked[k];
+      }
+    }
+  }
+  EXPECT_TRUE(renderer
+                  .grid_images(ModelId::he, ParamGrid(model_info(ModelId::he).params),
+                               std::span<const std::size_t>{})
+                  .empty());
+}
+
 TEST(Render, ConcaveMeshShadowsItself) {
   const EnvMap env = constant_env(1.f);
   const fs::path obj = write_bowl();

@@ -21,7 +21,7 @@ TEST(WardGrid, ErrorIsATenthOfATenPercentStep) {
   for (const AccuracySetting& s : accuracy_settings())
     if (s.model == ModelId::ward) settings.push_back(s);
   for (const AccuracySetting& s : settings) {
-    const Image image = ward_grid_image(renderer, s);
+    const Image image = grid_image(renderer, s);
     expect_a_tenth_of_a_step(measure_accuracy(std::span(&image, 1), reference, s).front(), s.name);
   }
 }

@@ -81,6 +81,9 @@ class Database {
 
   const std::filesystem::path& dir() const { return dir_; }
   const Manifest& manifest() const { return manifest_; }
+  // SHA-1 of manifest.yaml as it was read by open(): the provenance the CLI's and the server's
+  // answers quote, computed once.
+  const std::string& manifest_sha1() const { return manifest_sha1_; }
   // nullptr when the database does not hold the model.
   const ModelEmbedding* embedding(ModelId id) const;
   const ConversionTable* conversion(ModelId from, ModelId to) const;
@@ -90,6 +93,7 @@ class Database {
  private:
   std::filesystem::path dir_;
   Manifest manifest_;
+  std::string manifest_sha1_;
   std::vector<ModelEmbedding> embeddings_;
   std::vector<ConversionTable> conversions_;
 };

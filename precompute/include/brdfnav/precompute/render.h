@@ -9,6 +9,7 @@
 // for the same inputs whatever the thread count.
 #pragma once
 
+#include <brdfnav/core/grid.h>
 #include <brdfnav/core/material.h>
 #include <brdfnav/navigator/image.h>
 #include <brdfnav/precompute/env_map.h>
@@ -86,6 +87,12 @@ class Renderer {
   // in another grid, within the accuracy target. std::invalid_argument for an empty list, an
   // alpha that is not positive and finite, or a list that decreases.
   std::vector<Image> ward_grid(std::span<const double> alpha_x, std::span<const double> alpha_y);
+  // The images (rho_s = 1) of `nodes` of a grid of `model`'s lobes, in order: the nodes of one
+  // unit of grid_render_units(model, grid), or several. How they are rendered is the renderer's
+  // choice: Ward's whole grid in one pass (ward_grid(), so an image depends on the grid's alphas
+  // and a resumed build renders it as a fresh one did), else specular() of the nodes' lobes.
+  std::vector<Image> grid_images(ModelId model, const ParamGrid& grid,
+                                 std::span<const std::size_t> nodes);
   // rho_d * diffuse() + rho_s * specular(lobe); validates the material (MaterialError).
   Image render(const Material& material);
   // A GGX lobe with MaterialX's terms instead of Cycles' (precompute/src/materialx_ggx.h),
@@ -110,6 +117,14 @@ bool shares_quadrature(const Lobe& a, const Lobe& b);
 // in the order of their first indices.
 std::vector<std::vector<std::size_t>> quadrature_groups(std::span<const Lobe> lobes,
                                                         std::size_t max_size = SIZE_MAX);
+
+// A grid's nodes in the units Renderer::grid_images() renders together, in the order of their
+// first nodes: Ward's whole grid; else the nodes whose lobes shares_quadrature() (He's along eta,
+// Cook-Torrance's along f0); else one node each.
+std::vector<std::vector<std::size_t>> grid_render_units(ModelId model, const ParamGrid& grid);
+// Whether grid_images() of a node differs from specular() of its lobe (Ward's one pass over
+// shared nodes), so that an accuracy study measures both.
+bool grid_images_differ(ModelId model);
 
 // EXR header attributes recording how an image was made (material, env path and pixel hash,
 // scene, resolution, quality), for write_exr().

@@ -44,15 +44,16 @@ RenderQuality reference_quality(const RenderQuality& quality);
 // renderers must share the environment, scene and resolution.
 std::vector<AccuracyResult> measure_accuracy(Renderer& renderer, Renderer& reference,
                                              const AccuracySetting& setting);
-// ... of images of the setting's lobe made otherwise (ward_grid_image()), against the same
+// ... of images of the setting's lobe made otherwise (grid_image()), against the same
 // reference images: one list of results per image.
 std::vector<std::vector<AccuracyResult>> measure_accuracy(std::span<const Image> images,
                                                           Renderer& reference,
                                                           const AccuracySetting& setting);
 
-// A Ward setting's lobe as the precompute renders it: in a grid of the alpha ranges of Ward's
-// table (Renderer::ward_grid), whose nodes are those of every profile's Ward grid (widened to
-// the setting's alphas if they lie outside).
-Image ward_grid_image(Renderer& renderer, const AccuracySetting& setting);
+// A setting's lobe as the precompute renders it, Renderer::grid_images(): in a grid of its
+// model's table ranges, each axis the table's ends and the setting's value (Ward's one pass over
+// the grid depends on them, and they are the ends of every profile's grid). Differs from
+// specular() of the lobe only where grid_images_differ().
+Image grid_image(Renderer& renderer, const AccuracySetting& setting);
 
 }  // namespace brdfnav
