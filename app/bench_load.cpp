@@ -1,6 +1,6 @@
-// `brdfnav bench load`: many threads querying one open database (issue #8's load test). Every
-// answer is compared with the one a serial pass gave for the same query, and the resident memory
-// is read at the start, the middle and the end, which should not grow once every thread has its
+// `brdfnav bench load`: many threads querying one open database (docs/RELIABILITY.md, Load). Every
+// answer is compared with the one a serial pass gave for the same query, and the resident memory is
+// read at the start, the middle and the end, which should not grow once every thread has its
 // working memory.
 #include "bench_load.h"
 #include "bench_navigator.h"

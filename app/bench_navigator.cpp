@@ -1,5 +1,5 @@
 // `brdfnav bench navigator`: the neighbour service's latency per tab, a tab's thumbnails through
-// OCIO, and the resident memory with a database open (issue #5's targets), on this machine.
+// OCIO, and the resident memory with a database open (the navigator's targets), on this machine.
 #include "bench_navigator.h"
 
 #include <brdfnav/core/statistics.h>

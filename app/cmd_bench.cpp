@@ -1,5 +1,5 @@
-// `brdfnav bench render`: the pre-renderer's speed and accuracy (issue #3) on this machine, as
-// the Markdown table bench/RESULTS.md records; `brdfnav bench navigator`: the neighbour service;
+// `brdfnav bench render`: the pre-renderer's speed and accuracy (docs/RENDERER.md) on this machine,
+// as the Markdown table bench/RESULTS.md records; `brdfnav bench navigator`: the neighbour service;
 // `brdfnav bench fits`: the conversion fits; `brdfnav bench load`: concurrent queries.
 #include "bench_fidelity.h"
 #include "bench_load.h"

@@ -1,6 +1,6 @@
-// `brdfnav validate` (issue #7): the paper's evaluation of its metric (section 2.2: Figures 2, 3,
-// 8 and 9) and, given a database, of its embedding; written as report.md, report.yaml and PNG
-// plots (docs/VALIDATION.md). Every file is written atomically.
+// `brdfnav validate`: the paper's evaluation of its metric (section 2.2: Figures 2, 3, 8 and 9)
+// and, given a database, of its embedding; written as report.md, report.yaml and PNG plots
+// (docs/VALIDATION.md). Every file is written atomically.
 #include "commands.h"
 #include "validation_report.h"
 

@@ -15,8 +15,8 @@ namespace {
 // R^2 within kPerceptualSame of each other) and both are clearly straighter than RGB L2 and the
 // BRDF-space metric (their R^2 higher by at least kClearMargin). The margin is 2.5 times the
 // difference that counts as the same, so that "clearly straighter" is never within the noise of
-// "the same". (Issue #7's goal R^2(cube root) >= 0.95 is retired: the map's dynamic range sets
-// R^2, 0.863 to 0.945 over Blender's maps; docs/VALIDATION.md.)
+// "the same". (The validation's first goal, R^2(cube root) >= 0.95, is retired: the map's dynamic
+// range sets R^2, 0.863 to 0.945 over Blender's maps; docs/VALIDATION.md.)
 constexpr double kPerceptualSame = 0.02;
 constexpr double kClearMargin = 0.05;
 // The paper's claim for Figure 3.

@@ -1,5 +1,6 @@
-# `brdfnav serve` (issue #6): the JSON API over cpp-httplib and the page of app/web/, embedded
-# into the executable. Included by app/CMakeLists.txt after brdfnav_cli is defined.
+# `brdfnav serve`, the navigator's HTTP server (docs/SERVE.md): the JSON API over cpp-httplib and
+# the page of app/web/, embedded into the executable. Included by app/CMakeLists.txt after
+# brdfnav_cli is defined.
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(brdfnav_httplib REQUIRED IMPORTED_TARGET cpp-httplib)
 find_package(nlohmann_json 3 CONFIG REQUIRED)

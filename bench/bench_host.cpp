@@ -1,9 +1,9 @@
 // brdfnav_bench_host HOST [RUNS]: what a host program costs as a whole process, the figures a
 // renderer pays for loading brdfnav: the shared libraries `ldd HOST` lists, and over RUNS runs
 // (default 50, after 3 unmeasured ones that warm the page cache) the median and 90th percentile
-// wall time from spawn to exit and the largest peak resident set (wait4's ru_maxrss). The
-// targets (issue "A plugin a production renderer can load"): at most 12 libraries, a median of
-// at most 30 ms and a peak of at most 12 MB, for bench/host_one_closure.c.
+// wall time from spawn to exit and the largest peak resident set (wait4's ru_maxrss). The targets
+// of a plugin a production renderer can load: at most 12 libraries, a median of at most 30 ms and a
+// peak of at most 12 MB, for bench/host_one_closure.c.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>

@@ -1,5 +1,5 @@
 // He, Torrance, Sillion, Greenberg 1991, unpolarised, exactly as the He section of
-// shared/reference/brdf-models.md writes it: directional-diffuse lobe F S G D / (pi cos_i cos_o)
+// docs/CLOSURES.md (The formulas) writes it: directional-diffuse lobe F S G D / (pi cos_i cos_o)
 // plus a mirror term F exp(-g_s) S.
 #include <brdfnav/core/he.h>
 

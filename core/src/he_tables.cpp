@@ -61,7 +61,7 @@ class HermiteTable1D {
   std::vector<Node> nodes_;
 };
 
-// S1 = sqrt(pi) a (1 + erf a) / (exp(-a^2) + sqrt(pi) a (1 + erf a)): the sheet's
+// S1 = sqrt(pi) a (1 + erf a) / (exp(-a^2) + sqrt(pi) a (1 + erf a)): He et al.'s
 // (1 - erfc/2) / (1 + L) with numerator and denominator times 2 sqrt(pi) a, free of the 1/a pole,
 // hence smooth down to a = 0 (grazing). Spacing 1/64: interpolation error < 1e-9.
 const HermiteTable1D<2>& shadowing_table() {

@@ -4,7 +4,7 @@ namespace brdfnav {
 
 namespace {
 
-// The parameter tables' own grids: Table 1 of the paper with the reference sheet's ranges.
+// The parameter tables' own grids: Table 1 of the paper with this project's ranges.
 std::vector<ProfileGrid> table_grids() {
   std::vector<ProfileGrid> grids;
   for (const ModelInfo& m : models()) grids.push_back({m.id, ParamGrid(m.params)});

@@ -1,8 +1,8 @@
-// Bad input through the real CLI (issue #8): every case exits with an error code (1 to 127: an
-// error, never a signal), prints a message that names what is wrong and where (the file, key or
-// option), prints nothing on stdout and leaves no output file. What other suites already check
-// through the CLI is not repeated: a missing --env file, a corrupt table (checksum mismatch), bad
-// inline specs and non-finite directions (test_cli_eval, test_cli_precompute, test_cli_render).
+// Bad input through the real CLI (docs/RELIABILITY.md): every case exits with an error code (1 to
+// 127: an error, never a signal), prints a message that names what is wrong and where (the file,
+// key or option), prints nothing on stdout and leaves no output file. What other suites already
+// check through the CLI is not repeated: a missing --env file, a corrupt table (checksum mismatch),
+// bad inline specs and non-finite directions (test_cli_eval, test_cli_precompute, test_cli_render).
 // The suite builds one smoke-profile database and damages copies of it (it is registered WHOLE).
 #include "app/cli_runner.h"
 

@@ -239,8 +239,8 @@ void check_embedding(const YAML::Node& f) {
   // Interpolating between the test grids' nodes costs more than truncating to the last k.
   const std::size_t last = nodes.size() - 1;
   EXPECT_LT(nodes[last]["median"].as<double>(), f["anywhere"][last]["median"].as<double>());
-  // Issue #4's target holds on the test profile's grids (0.25% and 0.6% measured): the embedding
-  // is the metric, anywhere in the grids, to a median of 1% and a p95 of 3%.
+  // The embedding's accuracy target holds on the test profile's grids (0.25% and 0.6% measured):
+  // the embedding is the metric, anywhere in the grids, to a median of 1% and a p95 of 3%.
   EXPECT_LE(f["anywhere"][last]["median"].as<double>(), 0.01);
   EXPECT_LE(f["anywhere"][last]["p95"].as<double>(), 0.03);
 }

@@ -1,7 +1,7 @@
-// Crash safety (issue #8): `brdfnav precompute` killed with SIGKILL anywhere in its run, then run
-// again with --resume, gives a database byte for byte the one an uninterrupted run gives; a killed
-// `brdfnav export` leaves its output either absent or complete. Every run is of the same binary
-// in this process, so that a change of the renderer between builds cannot make them differ.
+// Crash safety (docs/RELIABILITY.md): `brdfnav precompute` killed with SIGKILL anywhere in its run,
+// then run again with --resume, gives a database byte for byte the one an uninterrupted run gives;
+// a killed `brdfnav export` leaves its output either absent or complete. Every run is of the same
+// binary in this process, so that a change of the renderer between builds cannot make them differ.
 #include "app/cli_runner.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Statistical and structural tests of every closure (shared/reference/brdf-models.md):
+// Statistical and structural tests of every closure (docs/CLOSURES.md, The formulas):
 // sample() against pdf() by a chi-square test, pdf mass against the accepted samples, the white
 // furnace by quadrature and by Monte Carlo, energy bounds, reciprocity, non-negativity, the
 // horizon, and sample()/eval()/pdf() agreement. Each runs for every model at several settings,

@@ -1,5 +1,5 @@
-// He et al. 1991 lobe (core/src/he.cpp) against the He section of
-// shared/reference/brdf-models.md.
+// He et al. 1991 lobe (core/src/he.cpp) against the He section of docs/CLOSURES.md (The
+// formulas).
 #include <brdfnav/core/cpu.h>
 #include <brdfnav/core/he.h>
 #include <brdfnav/core/material.h>
@@ -33,8 +33,8 @@ double relative_error(double value, double expected) {
   return std::abs(value - expected) / std::abs(expected);
 }
 
-// --- Independent, deliberately plain versions of the sheet's formulas (no code shared with
-// he.cpp), used by the rough-limit test and the plain lobe below.
+// --- Independent, deliberately plain versions of the formulas in docs/CLOSURES.md (no code
+// shared with he.cpp), used by the rough-limit test and the plain lobe below.
 
 double plain_fresnel(double c, double eta) {
   const double g = std::sqrt(eta * eta + c * c - 1.0);
@@ -103,7 +103,7 @@ long double reference_series(long double g, long double t) {
   return sum + compensation;
 }
 
-// The whole lobe F S G D / (pi cos_i cos_o) from the sheet's formulas with the plain forms above
+// The whole lobe F S G D / (pi cos_i cos_o) from those formulas with the plain forms above
 // and reference_series(), per channel (wi, wo of unit length).
 std::array<double, 3> plain_lobe(const He& he, const Vec3& wi, const Vec3& wo) {
   const Vec3 v = wi + wo;
@@ -148,9 +148,10 @@ struct Spot {
   std::array<double, 3> mirror;  // mirror_weight(wo), R G B
 };
 
-// Reference values computed with mpmath at 40 digits straight from the sheet: F at c = wi.h,
-// S1 with the errata exp(-a^2), sigma0 from findroot, D from the series summed in log space over
-// every term above 1e-60 of its largest. Intermediates, so that a failure can be traced:
+// Reference values computed with mpmath at 40 digits straight from the formulas of
+// docs/CLOSURES.md (the "sheet" of the test's name): F at c = wi.h, S1 with the errata exp(-a^2),
+// sigma0 from findroot, D from the series summed in log space over every term above 1e-60 of its
+// largest. Intermediates, so that a failure can be traced:
 //  A: c 0.486233090722, F 0.093819244365, S1i 0.994353635075, S1o 0.999999617232,
 //     x 0.00551505705415, sigma0 0.049999239621, G 1.06681645432,
 //     g (0.19887282, 0.29903593, 0.41969029), t (0.63682036, 0.95755754, 1.3439107).
@@ -201,8 +202,9 @@ TEST(He, SpotValuesMatchTheSheetPerChannel) {
   }
 }
 
-// The point: sigma 0.7227, tau 12.09, eta 2, g = 23, 35 and 49 in R, G, B, near the
-// lobe's peak. `brdfnav eval` gave the rough-surface limit there, 3.4% below the series (red).
+// The example that showed the rough-surface limit to be wrong (hence the test's name): sigma
+// 0.7227, tau 12.09, eta 2, g = 23, 35 and 49 in R, G, B, near the lobe's peak. `brdfnav eval`
+// gave the rough-surface limit there, 3.4% below the series (red).
 // Through the whole closure (rho_d = 0, rho_s = 1, directions normalised as `brdfnav eval` does)
 // against the plain lobe; mpmath at 40 digits gives 10.435841278528747, 10.310511681553708 and
 // 10.24128658890603.

@@ -1,6 +1,6 @@
-// Spot values of the lobes, derived by hand from the formulas of
-// shared/reference/brdf-models.md at directions chosen so the half vector is simple. Every
-// literal is printed by a python3 one-liner given next to it, run with this preamble P:
+// Spot values of the lobes, derived by hand from the formulas of docs/CLOSURES.md (The formulas) at
+// directions chosen so the half vector is simple. Every literal is printed by a python3 one-liner
+// given next to it, run with this preamble P:
 //   P='from math import *; d=lambda t,p: (sin(radians(t))*cos(radians(p)),
 //      sin(radians(t))*sin(radians(p)), cos(radians(t))); dot=lambda a,b: sum(x*y for x,y in
 //      zip(a,b))'

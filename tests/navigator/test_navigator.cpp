@@ -391,7 +391,7 @@ TEST(Navigator, GalleryReturnsDistinctMaterialsAtOneDistanceFromMatte) {
     EXPECT_NEAR(n.distance, navigator().distance(m, n.material), 1e-6);
 }
 
-// 1000 queries a thread (issue #8's load test in small; `brdfnav bench load` runs 10^5), fewer
+// 1000 queries a thread (the load test of `brdfnav bench load` in small; it runs 10^5), fewer
 // under ThreadSanitizer, which slows every query down by an order of magnitude.
 #ifdef __SANITIZE_THREAD__
 constexpr std::size_t kQueriesPerThread = 250;

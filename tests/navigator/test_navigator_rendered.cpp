@@ -74,7 +74,8 @@ std::vector<double> rendered_errors(Tab tab, int materials) {
   return errors;
 }
 
-// Issue #5: a median of 5% and a 90th percentile of 10% (docs/NAVIGATION.md has the figures).
+// The navigator's accuracy target: a median of 5% and a 90th percentile of 10%
+// (docs/NAVIGATION.md, Accuracy, has the figures).
 void expect_issue_bounds(const std::vector<double>& errors) {
   ASSERT_FALSE(errors.empty());
   EXPECT_LE(quantile(errors, 0.5), 0.05);

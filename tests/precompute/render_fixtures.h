@@ -77,8 +77,8 @@ inline std::vector<AccuracySetting> bending_ward_settings() {
   return settings;
 }
 
-// The target: the error at most a tenth of the change a 10% step makes, for every
-// parameter of the setting.
+// The pre-renderer's accuracy target: the error at most a tenth of the change a 10% step makes, for
+// every parameter of the setting.
 inline void expect_a_tenth_of_a_step(const std::vector<AccuracyResult>& results,
                                      const std::string& setting) {
   for (const AccuracyResult& r : results) {

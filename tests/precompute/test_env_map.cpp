@@ -1,5 +1,5 @@
-// Environment maps: every bad-input case of issue #3 gets a clear error naming the file, and the
-// orientation convention of env_map.h holds.
+// Environment maps: every bad input a user may hand the pre-renderer gets a clear error naming the
+// file, and the orientation convention of env_map.h holds.
 #include <brdfnav/precompute/env_map.h>
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// The precompute profiles (issue #4): every named profile holds a grid for every model, in the
-// model registry's order, inside each parameter's valid range, so a model added to the registry
-// but not to a profile fails here by name instead of leaving a database without it.
+// The precompute profiles: every named profile holds a grid for every model, in the model
+// registry's order, inside each parameter's valid range, so a model added to the registry but not
+// to a profile fails here by name instead of leaving a database without it.
 #include <brdfnav/precompute/profile.h>
 #include <gtest/gtest.h>
 
@@ -44,7 +44,7 @@ TEST(Profile, GridNodesIncreaseInsideTheValidRanges) {
 }
 
 // The paper's profile and the default one render the tables' own grids (Table 1 of the paper
-// with the reference sheet's ranges): its table gives Blinn-Phong 15 nodes, Ward 15 x 15,
+// with this project's ranges): its table gives Blinn-Phong 15 nodes, Ward 15 x 15,
 // Cook-Torrance 11 x 13, Lafortune 14 x 13 and He 8 x 9 x 5, plus the one diffuse image; GGX,
 // which the paper does not have, 13 x 13.
 TEST(Profile, PaperAndDefaultRenderTheTablesGrids) {

@@ -1,5 +1,5 @@
-// The pre-renderer (issue #3): white furnace, linearity in rho_d and rho_s, determinism across
-// thread counts, self-shadowing on a concave mesh, and the accuracy ratio of every model.
+// The pre-renderer: white furnace, linearity in rho_d and rho_s, determinism across thread counts,
+// self-shadowing on a concave mesh, and the accuracy ratio of every model.
 #include "render_fixtures.h"
 
 #include "every_model.h"
@@ -387,8 +387,8 @@ TEST(Render, ImagesAreThoseOfThisRevision) {
 
 class Accuracy : public ::testing::TestWithParam<ModelInfo> {};
 
-// The issue's target at a small size: the renderer's error is at most a tenth of the change a 10%
-// parameter step makes, at every setting and for every parameter.
+// The pre-renderer's accuracy target at a small size: the renderer's error is at most a tenth of
+// the change a 10% parameter step makes, at every setting and for every parameter.
 TEST_P(Accuracy, ErrorIsATenthOfATenPercentStep) {
   const Scene sphere = Scene::sphere();
   const int res = GetParam().id == ModelId::he ? 16 : 24;

@@ -11,8 +11,8 @@ namespace {
 
 using namespace test;
 
-// The target at a small size, for the three settings and the lobes that bend (the sliver
-// 0.5 x 0.005 included).
+// The pre-renderer's accuracy target at a small size, for the three settings and the lobes that
+// bend (the sliver 0.5 x 0.005 included).
 TEST(WardGrid, ErrorIsATenthOfATenPercentStep) {
   const Scene sphere = Scene::sphere();
   Renderer renderer(interior(), sphere, 16);

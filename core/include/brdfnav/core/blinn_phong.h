@@ -1,4 +1,4 @@
-// Blinn-Phong lobe: (n + 2) / (8 pi) cos_h^n (shared/reference/brdf-models.md).
+// Blinn-Phong lobe (Blinn 1977): (n + 2) / (8 pi) cos_h^n (docs/CLOSURES.md, The formulas).
 #pragma once
 
 #include <brdfnav/core/microfacet.h>

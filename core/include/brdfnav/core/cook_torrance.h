@@ -1,5 +1,5 @@
-// Cook-Torrance lobe: Schlick Fresnel, normalised Beckmann D, V-groove G
-// (shared/reference/brdf-models.md).
+// Cook-Torrance lobe (Cook & Torrance, SIGGRAPH 1981): Schlick Fresnel, normalised Beckmann D,
+// V-groove G (docs/CLOSURES.md, The formulas).
 #pragma once
 
 #include <brdfnav/core/microfacet.h>

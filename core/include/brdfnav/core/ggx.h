@@ -17,7 +17,7 @@ struct Ggx {
   static constexpr std::string_view kName = "ggx";
   static constexpr std::string_view kTitle = "GGX (Trowbridge-Reitz, anisotropic)";
   static constexpr bool kGrey = true;  // eval() is the same in every channel
-  // What docs/MODELS.md says of the formula (the reference sheet has no GGX).
+  // What docs/MODELS.md says of the formula (the paper has no GGX).
   static constexpr std::string_view kFormula =
       "The lobe is what Cycles (Blender 3.4) computes for its Glossy and Anisotropic BSDFs with "
       "the GGX distribution and colour rho_s: `lobe = D(h) G1(wi) G1(wo) / (4 cos_i cos_o)`, "

@@ -1,5 +1,5 @@
 // He, Torrance, Sillion, Greenberg 1991 (unpolarised): directional-diffuse lobe plus a mirror
-// (delta) term, as fixed in shared/reference/brdf-models.md.
+// (delta) term, as fixed in docs/CLOSURES.md (The formulas).
 #pragma once
 
 #include <brdfnav/core/microfacet.h>
@@ -132,7 +132,7 @@ struct Shadowing {
   double s1;
   double erfc;
 };
-// From the sheet's formulas, for 0 < a < kUnshadowedA: beyond it erfc(a) < 1e-295 and exp(-a^2)
+// From He et al.'s formulas, for 0 < a < kUnshadowedA: beyond it erfc(a) < 1e-295 and exp(-a^2)
 // underflows, S1 = 1 and K = 0 exactly in double precision.
 inline constexpr double kUnshadowedA = 26.0;
 Shadowing exact_shadowing(double a);

@@ -1,6 +1,6 @@
-// Isotropic single-lobe Lafortune: N max(0, cxy (wi.x wo.x + wi.y wo.y) + cz wi.z wo.z)^n with
-// cxy = -sqrt((1 - cz^2) / 2) and N = (n + 2) / (2 pi max(|cxy|, |cz|)^n)
-// (shared/reference/brdf-models.md).
+// Isotropic single-lobe Lafortune (Lafortune et al. 1997):
+// N max(0, cxy (wi.x wo.x + wi.y wo.y) + cz wi.z wo.z)^n with cxy = -sqrt((1 - cz^2) / 2) and
+// N = (n + 2) / (2 pi max(|cxy|, |cz|)^n) (docs/CLOSURES.md, The formulas).
 #pragma once
 
 #include <brdfnav/core/math.h>

@@ -1,6 +1,6 @@
 // Small vector helpers shared by every closure. Directions are in the local shading frame of
-// shared/reference/brdf-models.md: normal +z, tangent +x, bitangent +y, all pointing away from
-// the surface.
+// docs/MODELS.md and docs/CLOSURES.md: normal +z, tangent +x, bitangent +y, all pointing away
+// from the surface.
 #pragma once
 
 #include <Eigen/Core>

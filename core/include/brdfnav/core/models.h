@@ -18,8 +18,8 @@ struct ModelInfo {
   std::string_view title;  // for people
   std::span<const ParamSpec> params;
   bool has_mirror;  // has a delta (mirror) term
-  // The lobe's formula in a sentence or two of Markdown when the reference sheet has none
-  // (L::kFormula), else empty.
+  // The lobe's formula in a sentence or two of Markdown when the paper has none (L::kFormula,
+  // GGX's), else empty; docs/CLOSURES.md has every model's formula.
   std::string_view formula;
 };
 

@@ -1,5 +1,5 @@
 // Anisotropic Ward lobe, 1992 form with the unnormalised H = wi + wo, sampled as in Walter 2005
-// "Notes on the Ward BRDF" (shared/reference/brdf-models.md).
+// "Notes on the Ward BRDF", Cornell PCG technical report PCG-05-06 (docs/CLOSURES.md).
 #pragma once
 
 #include <brdfnav/core/microfacet.h>

@@ -1,7 +1,7 @@
-// The neighbour service of the navigation interface (paper, sections 3.3 and 4; issue #5): for a
-// material and a radius eps in the units of the cube-root RMS metric, the variations at embedded
-// distance eps in each tab of the interface, read from a precomputed database
-// (docs/DATABASE.md). The algorithms and their choices are in docs/NAVIGATION.md.
+// The neighbour service of the navigation interface (paper, sections 3.3 and 4): for a material and
+// a radius eps in the units of the cube-root RMS metric, the variations at embedded distance eps in
+// each tab of the interface, read from a precomputed database (docs/DATABASE.md). The algorithms
+// and their choices are in docs/NAVIGATION.md.
 //
 // A Navigator is immutable once built: any number of threads may query one concurrently; every
 // query allocates its own working memory.

@@ -1,4 +1,4 @@
-// Thumbnails of any material, fast enough for the navigator (issue #5): the database's
+// Thumbnails of any material, fast enough for the navigator (docs/NAVIGATION.md): the database's
 // pre-rendered images of the nodes around the material on its grid, each composed with the
 // material's rho_d and rho_s, blended with the embedding's cubic weights in cube-root space
 // (negative values, which a spline may overshoot to in dark pixels, are clamped to 0) and cubed

@@ -1,7 +1,7 @@
 // How close conversions fitted in the image metric are to the BRDF-space fits the database
-// holds (issue #4; the paper, section 4, says the two are similar). A fit in the image metric
-// minimises the embedded distance to the source material over the target model's parameters,
-// with the rho_s scale per channel solved in closed form, so it needs no rendering.
+// holds (docs/VALIDATION.md; the paper, section 4, says the two are similar). A fit in the image
+// metric minimises the embedded distance to the source material over the target model's
+// parameters, with the rho_s scale per channel solved in closed form, so it needs no rendering.
 #pragma once
 
 #include <brdfnav/precompute/database.h>

@@ -1,6 +1,6 @@
 // Precompute profiles: how dense the database's grids are, at what resolution its images are
-// rendered and how many embedding coefficients it keeps (issue #4). Every value of a profile is
-// recorded in the database manifest, so a database says exactly how it was made.
+// rendered and how many embedding coefficients it keeps (docs/DATABASE.md). Every value of a
+// profile is recorded in the database manifest, so a database says exactly how it was made.
 #pragma once
 
 #include <brdfnav/core/grid.h>

@@ -1,5 +1,5 @@
-// How accurate the pre-renderer is, in the metric's own terms (issue #3): for a material and one
-// of its parameters,
+// How accurate the pre-renderer is, in the metric's own terms: for a material and one of its
+// parameters,
 //   ratio = d(image at default quality, converged reference) / d(reference at p, reference at p')
 // with p' the parameter changed by 10%. A ratio of 0.1 means the renderer's error is a tenth of
 // the smallest step a user would take; the pre-rendered grids need <= 0.1 everywhere.
