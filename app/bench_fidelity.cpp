@@ -8,6 +8,7 @@
 #include "bench_fidelity.h"
 
 #include "bench_navigator.h"
+#include "exact_thumbnails.h"
 
 #include <brdfnav/core/statistics.h>
 #include <brdfnav/navigator/navigator.h>
@@ -52,29 +53,29 @@ void run_fidelity_bench(const FidelityBenchOptions& o) {
   const Navigator navigator = Navigator::open(o.db);
   const Database& db = navigator.database();
   const Manifest& manifest = db.manifest();
-  const EnvMap env = load_database_env(db);
-  const Scene scene = Scene::load(manifest.scene);
-  RenderOptions render_options;
-  render_options.quality = make_profile(manifest.profile).quality;
-  Renderer renderer(env, scene, manifest.resolution, render_options);
+  // Exact renders with the database's map, scene, resolution and quality: what the server's
+  // exact thumbnails and steps render.
+  const ExactThumbnails renders(db, manifest.resolution);
   const Thumbnails thumbnails(db, manifest.resolution);
   const Tab tabs[] = {Tab::lobe, Tab::diffuse, Tab::specular, Tab::models};
 
   std::map<std::string, std::vector<double>> thumbnail_errors;  // per model, in eps
   std::map<std::pair<std::string, Tab>, Errors> steps;
   const auto exact = [&](const Material& m) {
-    const Image image = renderer.render(m);
+    const std::shared_ptr<const Image> image = renders.render(m);
     thumbnail_errors[std::string(model_info(m.model).name)].push_back(
-        image_distance(image, thumbnails.render(m)) / o.radius);
+        image_distance(*image, thumbnails.render(m)) / o.radius);
     return image;
   };
   for (const Material& m : random_materials(db, o.materials)) {
     const std::string model(model_info(m.model).name);
-    const Image current = exact(m);
+    const std::shared_ptr<const Image> current = exact(m);
+    const ExactSteps moved = renders.steps_from(m);
     for (Tab tab : tabs) {
       Errors& e = steps[{model, tab}];
-      for (const Neighbor& n : navigator.neighbors(m, o.radius, tab)) {
-        const double rendered = image_distance(current, exact(n.material));
+      for (const Neighbor& n :
+           navigator.neighbors(m, o.radius, tab, 8, o.exact ? &moved : nullptr)) {
+        const double rendered = image_distance(*current, *exact(n.material));
         if (n.at_boundary || n.clamped || n.beyond_radius)
           ++e.flagged;
         else
@@ -84,8 +85,9 @@ void run_fidelity_bench(const FidelityBenchOptions& o) {
     std::fprintf(stderr, "brdfnav: bench fidelity: %s done\n", model.c_str());
   }
 
-  std::printf("database %s (profile %s, %d px), eps %.4g, %d random materials per model\n\n",
-              o.db.c_str(), manifest.profile.c_str(), manifest.resolution, o.radius, o.materials);
+  std::printf("database %s (profile %s, %d px), eps %.4g, %d random materials per model, %s\n\n",
+              o.db.c_str(), manifest.profile.c_str(), manifest.resolution, o.radius, o.materials,
+              o.exact ? "steps moved to eps by rendering (--exact)" : "steps from the embedding");
   std::printf("Thumbnails against exact renders (in eps; targets 0.05 median, 0.25 worst)\n\n");
   std::printf("| model | images | median | worst | verdict |\n|---|---:|---:|---:|---|\n");
   for (const auto& [model, errors] : thumbnail_errors) {

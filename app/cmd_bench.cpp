@@ -245,6 +245,7 @@ void add_bench_commands(CLI::App& app) {
   fidelity->add_option("--radius", f->radius, "Radius eps")
       ->capture_default_str()
       ->check(radius_validator());
+  fidelity->add_flag("--exact", f->exact, "Steps moved to eps by rendering, as serve does");
   fidelity->add_option("--materials", f->materials, "Random materials per model")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));

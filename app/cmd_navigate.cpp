@@ -3,6 +3,7 @@
 // `brdfnav export`: a chosen material with its provenance and its equivalents in the other
 // models. All read a database made by `brdfnav precompute` (docs/NAVIGATION.md).
 #include "commands.h"
+#include "exact_thumbnails.h"
 #include "export_formats.h"
 
 #include <brdfnav/core/atomic_file.h>
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace brdfnav::cli {
@@ -80,8 +82,9 @@ Material load_current(const Inputs& in) {
 }
 
 void add_neighbors_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "neighbors", "Print a material's neighbours at embedded distance --radius, as YAML");
+  auto* cmd = app.add_subcommand("neighbors",
+                                 "Print a material's neighbours at embedded (or, --exact, "
+                                 "rendered) distance --radius, as YAML");
   auto in = std::make_shared<Inputs>();
   auto radius = std::make_shared<double>(0);
   auto tab = std::make_shared<std::string>("all");
@@ -103,13 +106,24 @@ void add_neighbors_command(CLI::App& app) {
   cmd->add_option("--threads", in->threads, "Workers for k-means (answers do not depend on it)")
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
+  auto exact = std::make_shared<bool>(false);
+  cmd->add_flag("--exact", *exact,
+                "Move each offer until a render of it is at --radius from a render of the "
+                "material (the database's map, scene and resolution; a few renders per offer)");
   cmd->callback([=] {
     const Navigator navigator = open_navigator(*in);
     const Material current = load_current(*in);
+    std::optional<ExactThumbnails> renders;
+    std::optional<ExactSteps> steps;
+    if (*exact) {
+      renders.emplace(navigator.database(), navigator.database().manifest().resolution);
+      steps = renders->steps_from(current);
+    }
     std::vector<Neighbor> all;
     for (Tab t : kTabs) {
       if (*tab != "all" && *tab != tab_name(t)) continue;
-      std::vector<Neighbor> some = navigator.neighbors(current, *radius, t, *k);
+      std::vector<Neighbor> some =
+          navigator.neighbors(current, *radius, t, *k, steps ? &*steps : nullptr);
       all.insert(all.end(), some.begin(), some.end());
     }
     std::fputs(neighbors_to_yaml(all).c_str(), stdout);

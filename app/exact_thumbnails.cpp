@@ -73,4 +73,12 @@ std::shared_ptr<const Image> ExactThumbnails::render(const Material& m) const {
   return image;
 }
 
+ExactSteps ExactThumbnails::steps_from(const Material& current) const {
+  ExactSteps steps;
+  steps.distance = [this, current](const Material& m) {
+    return image_distance(*render(current), *render(m));
+  };
+  return steps;
+}
+
 }  // namespace brdfnav::cli

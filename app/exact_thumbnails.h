@@ -8,6 +8,7 @@
 #include <brdfnav/core/material.h>
 #include <brdfnav/navigator/database.h>
 #include <brdfnav/navigator/image.h>
+#include <brdfnav/navigator/navigator.h>
 
 #include <cstddef>
 #include <list>
@@ -30,6 +31,10 @@ class ExactThumbnails {
   // time (each render uses every core); a cached one comes back at once. Throws DatabaseError
   // when the database's map has changed or is gone, MaterialError for an invalid material.
   std::shared_ptr<const Image> render(const Material& m) const;
+  // Steps measured on these renders (Navigator::neighbors): the image metric's distance from
+  // `current`'s render, at this resolution. The renders stay in the cache, so the thumbnails of
+  // the offers are ready once their steps are. Keeps a reference to *this.
+  ExactSteps steps_from(const Material& current) const;
 
  private:
   struct Impl;

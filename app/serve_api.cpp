@@ -154,6 +154,14 @@ Tab read_tab(const json& value) {
                      "unknown tab " + shown(value) + " (expected one of: " + join(names) + ")");
 }
 
+// An optional true/false field, false when absent.
+bool read_flag(const json& request, const char* key) {
+  const auto it = request.find(key);
+  if (it == request.end()) return false;
+  if (!it->is_boolean()) throw RequestError(key, "expected true or false, got " + shown(*it));
+  return it->get<bool>();
+}
+
 int read_clusters(const json& request) {
   const auto it = request.find("k");
   if (it == request.end()) return 8;
@@ -274,7 +282,12 @@ ApiResponse error_response(int status, const std::string& message) {
 NavigatorApi::NavigatorApi(const ApiOptions& options)
     : navigator_(Navigator::open(options.db)),
       thumbnails_(navigator_.database(), options.resolution),
-      exact_(navigator_.database(), thumbnails_.resolution()) {}
+      exact_(navigator_.database(), thumbnails_.resolution()),
+      metric_renders_(
+          thumbnails_.resolution() == navigator_.database().manifest().resolution
+              ? nullptr
+              : std::make_unique<ExactThumbnails>(navigator_.database(),
+                                                  navigator_.database().manifest().resolution)) {}
 
 ApiResponse NavigatorApi::handle(const ApiRequest& r) const {
   const auto route = std::find_if(std::begin(kRoutes), std::end(kRoutes),
@@ -326,12 +339,16 @@ ApiResponse NavigatorApi::info() const {
 
 ApiResponse NavigatorApi::neighbors(std::string_view body) const {
   return answer([&] {
-    const json request = parse_body(body, {"material", "radius", "tab", "k"});
+    const json request = parse_body(body, {"material", "radius", "tab", "k", "exact"});
     const Material current = read_material(navigator_.database(), require(request, "material"));
     const double radius = read_radius(require(request, "radius"));
     const Tab tab = read_tab(require(request, "tab"));
+    std::optional<ExactSteps> steps;
+    if (read_flag(request, "exact"))
+      steps = (metric_renders_ ? *metric_renders_ : exact_).steps_from(current);
     json list = json::array();
-    for (const Neighbor& n : navigator_.neighbors(current, radius, tab, read_clusters(request)))
+    for (const Neighbor& n : navigator_.neighbors(current, radius, tab, read_clusters(request),
+                                                  steps ? &*steps : nullptr))
       list.push_back(neighbor_json(n));
     return json_response({{"neighbors", list}});
   });
@@ -342,10 +359,7 @@ ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
     const json request = parse_body(body, {"material", "display", "view", "preview"});
     const Material m = read_material(navigator_.database(), require(request, "material"));
     const auto [display, view] = read_display_view(colour_, request);
-    const auto preview = request.find("preview");
-    if (preview != request.end() && !preview->is_boolean())
-      throw RequestError("preview", "expected true or false, got " + shown(*preview));
-    const bool quick = preview != request.end() && preview->get<bool>();
+    const bool quick = read_flag(request, "preview");
     const std::shared_ptr<const Image> rendered =
         quick ? std::make_shared<const Image>(thumbnails_.render(m)) : exact_.render(m);
     const Image& image = *rendered;

@@ -73,8 +73,10 @@ class NavigatorApi {
   // GET /api/info: models and parameter tables, tabs, displays and views, radius range, the
   // start material and the database's provenance.
   ApiResponse info() const;
-  // POST /api/neighbors {material, radius, tab[, k]} -> {neighbors: [{tab, label, distance,
-  // flags, material}]}.
+  // POST /api/neighbors {material, radius, tab[, k, exact]} -> {neighbors: [{tab, label,
+  // distance, flags, material}]}. With exact: true each offer moves until its render is at
+  // `radius` from the material's (ExactSteps, at the database's resolution), `distance` then
+  // the rendered one: slower (a few renders per offer), and the ring's steps equal.
   ApiResponse neighbors(std::string_view body) const;
   // POST /api/thumbnail {material[, display, view, preview]} -> image/png: the exact render of
   // the material (ExactThumbnails), or with preview: true the quick blend of the database's
@@ -94,6 +96,9 @@ class NavigatorApi {
   Navigator navigator_;
   Thumbnails thumbnails_;
   ExactThumbnails exact_;
+  // Renders at the database's resolution, the metric's, for exact steps: exact_ itself when the
+  // thumbnails have that size.
+  std::unique_ptr<ExactThumbnails> metric_renders_;
   ocio::ColorPipeline colour_;
 };
 

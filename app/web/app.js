@@ -20,6 +20,7 @@ const state = {
   at: -1,
   tab: 'gallery',
   radius: 0,
+  exact: true,  // variations placed by rendering (POST /api/neighbors exact: true)
   display: '',
   view: '',
 };
@@ -296,12 +297,15 @@ async function redraw() {
   freezeRing();
   neighborQuery?.abort();
   neighborQuery = new AbortController();
-  progress.start('Finding variations\u2026');
+  // The gallery's offers are the database's own materials: nothing to render to place them.
+  const exact = state.exact && state.tab !== 'gallery';
+  progress.start(exact ? 'Rendering to place the variations\u2026' : 'Finding variations\u2026');
   try {
     const centreShown = progressive(centre.querySelector('img'), material, gen);
     centreShown.catch(() => {});  // awaited below, unless this redraw is overtaken first
     const { neighbors } = await (await call('/api/neighbors',
-      { material, radius: state.radius, tab: state.tab }, { signal: neighborQuery.signal })).json();
+      { material, radius: state.radius, tab: state.tab, exact },
+      { signal: neighborQuery.signal })).json();
     if (gen !== generation) return;
     const images = drawRing(neighbors);
     let done = 0;
@@ -471,6 +475,7 @@ function wire() {
     redraw();
   });
   $('#view').addEventListener('change', (event) => { state.view = event.target.value; redraw(); });
+  $('#exact').addEventListener('change', (event) => { state.exact = event.target.checked; redraw(); });
   $('#export').addEventListener('click', exportMaterial);
   $('#load-file').addEventListener('change', (event) => {
     const [file] = event.target.files;

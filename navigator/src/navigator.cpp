@@ -31,13 +31,21 @@ Neighbor neighbor_of(Tab tab, std::string label, const nav::Hit& hit, double dis
 }
 
 // Every path of one tab walked to the sphere around the current material (the paths' origin).
+// A models-tab candidate's path from its model's best fit, and where the walk met the sphere.
+struct Walked {
+  nav::Path path;
+  Material fit;
+  nav::Hit hit;
+};
+
 std::vector<Neighbor> walk_all(Tab tab, const std::vector<nav::Path>& paths,
                                const ModelEmbedding& embedding, const Material& current,
-                               double radius) {
+                               double radius, const ExactSteps* exact) {
   const Eigen::VectorXf centre = embedding.embed(current);
   std::vector<Neighbor> out;
   for (const nav::Path& path : paths) {
-    const nav::Hit hit = nav::walk_to_sphere(embedding, centre, radius, path);
+    nav::Hit hit = nav::walk_to_sphere(embedding, centre, radius, path);
+    if (exact) hit = nav::refine_exactly(path, hit, radius, 0, *exact);
     out.push_back(neighbor_of(tab, path.label, hit, hit.distance));
   }
   return out;
@@ -186,29 +194,30 @@ std::vector<Equivalent> Navigator::equivalents(const Material& m) const {
 }
 
 std::vector<Neighbor> Navigator::neighbors(const Material& current, double radius, Tab tab,
-                                           int clusters) const {
+                                           int clusters, const ExactSteps* exact) const {
   validate(current);
   check_colorspace(current);
   check_query(radius, clusters);
-  std::vector<Neighbor> offers = tab_offers(current, radius, tab, clusters);
+  if (exact && !exact->distance) throw NavigatorError("exact steps: no distance given");
+  std::vector<Neighbor> offers = tab_offers(current, radius, tab, clusters, exact);
   nav::describe(offers, current);
   return nav::ring_order(std::move(offers));
 }
 
 std::vector<Neighbor> Navigator::tab_offers(const Material& current, double radius, Tab tab,
-                                            int clusters) const {
+                                            int clusters, const ExactSteps* exact) const {
   const ModelEmbedding& embedding = embedding_of(current.model);
   switch (tab) {
     case Tab::lobe:
-      return lobe_tab(current, radius);
+      return lobe_tab(current, radius, exact);
     case Tab::diffuse:
     case Tab::specular:
       return walk_all(tab,
                       nav::colour_paths(current, tab == Tab::diffuse ? nav::ColourTerm::diffuse
                                                                      : nav::ColourTerm::specular),
-                      embedding, current, radius);
+                      embedding, current, radius, exact);
     case Tab::models:
-      return models_tab(current, radius, clusters);
+      return models_tab(current, radius, clusters, exact);
     case Tab::gallery:
       return gallery_tab(embedding.embed(current), clusters);
   }
@@ -222,11 +231,44 @@ std::vector<Neighbor> Navigator::gallery(int count) const {
   return offers;
 }
 
-std::vector<Neighbor> Navigator::lobe_tab(const Material& current, double radius) const {
+std::vector<Neighbor> Navigator::lobe_tab(const Material& current, double radius,
+                                          const ExactSteps* exact) const {
   const ModelEmbedding& embedding = embedding_of(current.model);
   return walk_all(Tab::lobe, nav::lobe_paths(current, embedding.grid(), options_.ward_isotropic),
-                  embedding, current, radius);
+                  embedding, current, radius, exact);
 }
+
+namespace {
+
+// The last of `offers`, a models-tab offer found through the embedding, at the exact distance
+// `radius` along the path it was walked on from its model's best fit (`walked`; none for a fit
+// beyond the radius). A fit that is itself at least `radius` away exactly is offered flagged
+// beyond_radius, once per model.
+void refine_models_offer(std::vector<Neighbor>& offers, const Walked* walked, double radius,
+                         const ExactSteps& exact) {
+  Neighbor& n = offers.back();
+  const Material fit = walked ? walked->fit : n.material;
+  const double fit_distance = exact.distance(fit);
+  if (!walked || fit_distance >= radius) {
+    const bool offered = std::any_of(offers.begin(), offers.end() - 1, [&](const Neighbor& o) {
+      return o.beyond_radius && o.label == n.label;
+    });
+    if (offered) {
+      offers.pop_back();
+      return;
+    }
+    n = {.tab = Tab::models, .label = n.label, .material = fit, .distance = fit_distance};
+    n.beyond_radius = true;
+    return;
+  }
+  // The fit's own distance starts the secant: the path leaves from it, not from the current
+  // material.
+  const nav::Hit moved =
+      nav::refine_exactly(walked->path, walked->hit, radius, fit_distance, exact);
+  n = neighbor_of(Tab::models, n.label, moved, moved.distance);
+}
+
+}  // namespace
 
 // Paper, section 4, with the sphere around the current material: from the current material's
 // best fit A' in every other model, that model's neighbours at distance eps from the current
@@ -235,12 +277,15 @@ std::vector<Neighbor> Navigator::lobe_tab(const Material& current, double radius
 // own best fit back in the current model are dropped (the current model shows them already),
 // then one is kept per k-means cluster, and of two kept offers within delta of each other only
 // the first (they would look the same).
-std::vector<Neighbor> Navigator::models_tab(const Material& current, double radius,
-                                            int clusters) const {
+std::vector<Neighbor> Navigator::models_tab(const Material& current, double radius, int clusters,
+                                            const ExactSteps* exact) const {
   const Eigen::VectorXf from = embed(current);
   const double delta = options_.delta_factor * radius;
   std::vector<Neighbor> candidates;
   std::vector<Eigen::VectorXf> points;
+  // Each candidate's path and the fit it starts from (none for a fit beyond the radius): what
+  // exact steps move the kept offers along.
+  std::vector<std::optional<Walked>> paths;
   for (const ProfileGrid& g : database_.manifest().grids) {
     if (g.model == current.model || !database_.conversion(current.model, g.model) ||
         !database_.conversion(g.model, current.model))
@@ -255,6 +300,7 @@ std::vector<Neighbor> Navigator::models_tab(const Material& current, double radi
       n.beyond_radius = true;
       candidates.push_back(std::move(n));
       points.push_back(std::move(fit_point));
+      paths.emplace_back();
       continue;
     }
     for (const nav::Path& path : nav::lobe_paths(fit, embedding.grid(), options_.ward_isotropic)) {
@@ -264,6 +310,7 @@ std::vector<Neighbor> Navigator::models_tab(const Material& current, double radi
       if (embedding_distance(x, back) < delta) continue;
       candidates.push_back(neighbor_of(Tab::models, model_name(g.model), hit, hit.distance));
       points.push_back(std::move(x));
+      paths.emplace_back(Walked{path, fit, hit});
     }
   }
   if (candidates.empty()) return {};
@@ -279,6 +326,7 @@ std::vector<Neighbor> Navigator::models_tab(const Material& current, double radi
     if (std::any_of(kept.begin(), kept.end(), alike)) continue;
     kept.push_back(i);
     out.push_back(std::move(candidates[i]));
+    if (exact) refine_models_offer(out, paths[i] ? &*paths[i] : nullptr, radius, *exact);
   }
   return out;
 }

@@ -1,7 +1,9 @@
 #include "walk.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <optional>
 
 namespace brdfnav::nav {
 
@@ -114,10 +116,59 @@ Hit walk_to_sphere(const ModelEmbedding& embedding, const Eigen::VectorXf& centr
         last = 1;
       }
     }
-    return {path.material(hi), d_hi, true};
+    return {path.material(hi), d_hi, true, hi};
   }
   const double end = path.breaks.back();
-  return {path.material(end), distance(end), false};
+  return {path.material(end), distance(end), false, end};
+}
+
+Hit refine_exactly(const Path& path, const Hit& hit, double radius, double start_exact,
+                   const ExactSteps& steps) {
+  const double end = path.breaks.back();
+  const auto off = [&](double d) { return std::abs(d / radius - 1); };
+  // The exact distance along the path is about linear in small steps but can turn sharply (a
+  // Lafortune lobe across cz = 1/sqrt(3)): secant steps until the sphere is bracketed, then
+  // regula falsi (Illinois) inside the bracket, which a sharp turn slows but cannot escape.
+  double lo = 0, f_lo = start_exact - radius;  // inside the sphere
+  double hi = -1, f_hi = 0;                    // outside, once found
+  double prev = 0, f_prev = f_lo;              // the point before the last, for the secant
+  double s = hit.s;
+  Hit best{path.material(0), start_exact, true, 0};
+  std::optional<Hit> at_end;  // the path's end, once rendered
+  int last = 0;               // which end of the bracket moved last: -1 lo, +1 hi
+  for (int k = 0; k < steps.renders; ++k) {
+    const Material m = path.material(s);
+    const double d = steps.distance(m), f = d - radius;
+    if (k == 0 || off(d) < off(best.distance)) best = {m, d, d >= radius || s < end, s};
+    if (!(s < end)) at_end = Hit{m, d, d >= radius, s};
+    if (off(d) <= steps.tolerance) break;
+    if (f < 0) {
+      if (hi >= 0 && last == -1) f_hi *= 0.5;
+      prev = lo, f_prev = f_lo, lo = s, f_lo = f, last = -1;
+      if (hi < 0 && !(s < end)) break;  // the path's end is inside the sphere
+    } else {
+      if (hi >= 0 && last == 1) f_lo *= 0.5;
+      prev = hi >= 0 ? hi : lo, f_prev = hi >= 0 ? f_hi : f_lo, hi = s, f_hi = f, last = 1;
+    }
+    double next;
+    if (hi >= 0) {
+      next = hi - f_hi * (hi - lo) / (f_hi - f_lo);
+      if (!(next > std::min(lo, hi) && next < std::max(lo, hi))) next = 0.5 * (lo + hi);
+    } else {
+      // Not yet outside: extrapolate the last two points, at most 4 times farther; the last
+      // render goes to the end, so that an offer the budget leaves inside is the end, flagged.
+      next = f != f_prev ? s + (0 - f) * (s - prev) / (f - f_prev) : 2 * s;
+      if (!std::isfinite(next)) next = 2 * s;
+      next = std::clamp(next, s, std::min(end, std::max(4 * s, s + 1e-9)));
+      if (k + 2 == steps.renders) next = end;
+    }
+    if (next == s) break;
+    s = next;
+  }
+  // Never outside the sphere (the distance need not grow monotonically along the path): the
+  // path's end, flagged as the embedding's walk flags it.
+  if (hi < 0 && off(best.distance) > steps.tolerance && at_end) return *at_end;
+  return best;
 }
 
 std::vector<Path> lobe_paths(const Material& m, const ParamGrid& grid, bool ward_isotropic) {

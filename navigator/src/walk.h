@@ -5,6 +5,7 @@
 #include <brdfnav/core/grid.h>
 #include <brdfnav/core/material.h>
 #include <brdfnav/navigator/embedding.h>
+#include <brdfnav/navigator/navigator.h>
 
 #include <Eigen/Core>
 
@@ -25,8 +26,9 @@ struct Path {
 
 struct Hit {
   Material material;
-  double distance;  // embedded, from the centre
+  double distance;  // embedded, from the centre (or exact, after refine_exactly)
   bool reached;     // false: the whole path stays inside the sphere, `material` is its end
+  double s = 0;     // where on the path
 };
 
 // Walks `path` segment by segment and finds the crossing of the sphere, on the embedded
@@ -37,6 +39,14 @@ struct Hit {
 // at `start_distance` from the centre (0: at the centre), which must be below `radius`.
 Hit walk_to_sphere(const ModelEmbedding& embedding, const Eigen::VectorXf& centre, double radius,
                    const Path& path, double start_distance = 0);
+
+// The hit moved along its path until `exact` (the distance a render measures from the centre's
+// material) is within `steps.tolerance` of the radius: secant steps from the embedding's hit,
+// the path's start at `start_exact` (0 when it starts at the centre), at most `steps.renders`
+// evaluations. Returns the hit whose exact distance is closest to the radius, with that
+// distance; a path whose end stays inside the sphere gives its end, not reached.
+Hit refine_exactly(const Path& path, const Hit& hit, double radius, double start_exact,
+                   const ExactSteps& steps);
 
 // The iso-parameter paths from `m` through `grid`: every parameter up ("<name>+") and down
 // ("<name>-"), each in its own scale (log or linear), to the end of the grid. With

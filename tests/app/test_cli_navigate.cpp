@@ -71,6 +71,35 @@ TEST_F(CliNavigate, NeighborsPrintsOneYamlListWithTheStableKeys) {
   for (const YAML::Node& item : only) EXPECT_EQ(item["tab"].as<std::string>(), "lobe");
 }
 
+// --exact: each lobe offer moved until a render of it is at --radius from the material's. Checked
+// with renders of its own (`brdfnav render` at the database's map and resolution, whose render
+// quality is the CLI's default rather than the profile's, and `brdfnav distance`): within 5%.
+TEST_F(CliNavigate, ExactNeighborsAreAtTheRadiusOfIndependentRenders) {
+  const std::string colours = ",rho_d=0.2,rho_s=0.4";
+  const std::string spec = "ward:alpha_x=0.1,alpha_y=0.05" + colours;
+  const CliResult r = neighbors("--material " + spec + " --radius 0.03 --tab lobe --exact");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const YAML::Node manifest = YAML::LoadFile((db() / "manifest.yaml").string());
+  const std::string render = "render --env " + manifest["environment"]["path"].as<std::string>() +
+                             " --res " + manifest["resolution"].as<std::string>() + " --out ";
+  ASSERT_EQ(run_cli(render + file("current.exr").string() + " --material " + spec).exit_code, 0);
+  int checked = 0;
+  for (const YAML::Node& item : YAML::Load(r.out)["neighbors"]) {
+    if (item["flags"].size() > 0) continue;
+    const YAML::Node params = item["material"]["params"];
+    const std::string offer = "ward:alpha_x=" + params["alpha_x"].as<std::string>() +
+                              ",alpha_y=" + params["alpha_y"].as<std::string>() + colours;
+    const fs::path image = file(item["label"].as<std::string>() + ".exr");
+    ASSERT_EQ(run_cli(render + image.string() + " --material " + offer).exit_code, 0);
+    const CliResult d = run_cli("distance " + file("current.exr").string() + " " + image.string());
+    ASSERT_EQ(d.exit_code, 0) << d.err;
+    EXPECT_NEAR(std::stod(d.out) / 0.03, 1, 0.05) << offer;
+    EXPECT_NEAR(item["distance"].as<double>() / 0.03, 1, 0.02) << offer;
+    ++checked;
+  }
+  EXPECT_GE(checked, 4) << r.out;
+}
+
 // The export is a material file: neighbors and eval take it as --material.
 TEST_F(CliNavigate, ExportRoundTripsAsAMaterial) {
   const std::string spec = "he:sigma=0.3,tau=9,eta=2,rho_d=0.1/0.2/0.3,rho_s=0.7";

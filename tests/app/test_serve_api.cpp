@@ -105,6 +105,31 @@ TEST(ServeApi, ThumbnailsAreExactUnlessAPreviewIsAskedFor) {
   EXPECT_EQ(error_of(bad).rfind("preview: expected true or false", 0), 0u) << error_of(bad);
 }
 
+// Exact steps: each offer of the lobe tab moved until its render is at the radius from the
+// material's (at the database's resolution, not the thumbnails'): unflagged ones within 2%,
+// their distances the rendered ones, not the embedding's; an `exact` that is not a boolean is
+// refused naming it.
+TEST(ServeApi, ExactStepsAreAtTheRadiusByRendering) {
+  const std::string query =
+      R"({"material": )" + kMaterial + R"(, "radius": 0.02, "tab": "lobe", "exact": )";
+  const ApiResponse plain = call("POST", "/api/neighbors", query + "false}");
+  const ApiResponse exact = call("POST", "/api/neighbors", query + "true}");
+  ASSERT_EQ(exact.status, 200) << exact.body;
+  const auto offers = nlohmann::json::parse(exact.body).at("neighbors");
+  const auto embedded = nlohmann::json::parse(plain.body).at("neighbors");
+  ASSERT_EQ(offers.size(), embedded.size());
+  int moved = 0;
+  for (std::size_t i = 0; i < offers.size(); ++i) {
+    if (!offers[i].at("flags").empty()) continue;
+    EXPECT_NEAR(offers[i].at("distance").get<double>() / 0.02, 1, 0.02) << offers[i];
+    moved += offers[i].at("material") != embedded[i].at("material");
+  }
+  EXPECT_GT(moved, 0);
+  const ApiResponse bad = call("POST", "/api/neighbors", query + "1}");
+  EXPECT_EQ(bad.status, 400);
+  EXPECT_EQ(error_of(bad).rfind("exact: expected true or false", 0), 0u) << error_of(bad);
+}
+
 // The format of an export: yaml by default; a renderer's format needs a database with the ggx
 // model, which the fixture (built before it existed) lacks: the answer says so.
 TEST(ServeApi, TheExportsFormatIsCheckedAndARenderersNeedsGgx) {

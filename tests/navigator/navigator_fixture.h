@@ -6,6 +6,7 @@
 #pragma once
 
 #include <brdfnav/core/material.h>
+#include <brdfnav/navigator/navigator.h>
 #include <brdfnav/precompute/database.h>
 
 #include <unistd.h>
@@ -63,6 +64,12 @@ inline Material random_material(ModelId id, const ParamGrid& grid, std::mt19937_
     m.rho_s[c] = rho_s_lo + unit(rng) * (rho_s_hi - rho_s_lo);
   }
   return m;
+}
+
+// The navigator over that database, opened once per process.
+inline const Navigator& navigator() {
+  static const Navigator nav = Navigator::open(NavigationDatabase::get().dir());
+  return nav;
 }
 
 }  // namespace brdfnav::test

@@ -26,10 +26,7 @@ namespace {
 using test::random_material;
 using ::testing::HasSubstr;
 
-const Navigator& navigator() {
-  static const Navigator nav = Navigator::open(test::NavigationDatabase::get().dir());
-  return nav;
-}
+using test::navigator;
 
 const ParamGrid& grid_of(ModelId id) {
   return navigator().database().embedding(id)->grid();

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -59,7 +60,7 @@ struct Neighbor {
   // diffuse, specular: "L+", "L-", "ab+0", "ab+45", ..., "ab+315"; models, gallery: the model.
   std::string label;
   Material material;
-  double distance = 0;  // embedded distance from the current material
+  double distance = 0;  // embedded distance from the current material, or exact (ExactSteps)
   // The walk reached the end of a parameter's database range before distance eps (lobe and
   // models tabs): the neighbour is at that end.
   bool at_boundary = false;
@@ -82,6 +83,17 @@ struct Equivalent {
   double residual = 0;  // embedded distance between the material and the fit
 };
 
+// Steps measured by rendering: the embedding places each offer at eps to within its own error
+// (a few percent, more for sharp lobes between grid nodes); a caller with a renderer (the server,
+// the CLI; the navigator has none) hands its distance here and neighbors() moves every offer
+// along its path until the rendered distance is at eps.
+struct ExactSteps {
+  // The distance in the image metric from the query's current material to `m`.
+  std::function<double(const Material& m)> distance;
+  double tolerance = 0.02;  // |distance / eps - 1| at which an offer stops moving
+  int renders = 8;          // at most, per offer
+};
+
 struct NavigatorOptions {
   int threads = 1;             // workers for k-means (the answers do not depend on it)
   double delta_factor = 0.3;   // models tab: drop neighbours within delta_factor * eps of the
@@ -99,10 +111,12 @@ class Navigator {
   const NavigatorOptions& options() const { return options_; }
 
   // The neighbours of `current` in one tab at embedded distance `radius`. `clusters` is the k of
-  // the models and gallery tabs (at most that many neighbours). Throws NavigatorError, and
-  // MaterialError for an invalid material.
-  std::vector<Neighbor> neighbors(const Material& current, double radius, Tab tab,
-                                  int clusters = 8) const;
+  // the models and gallery tabs (at most that many neighbours). With `exact`, the lobe, colour
+  // and models tabs' offers move along their paths to the exact distance `radius` and report it
+  // (an offer flagged beyond_radius stays the fit). Throws NavigatorError, and MaterialError for
+  // an invalid material.
+  std::vector<Neighbor> neighbors(const Material& current, double radius, Tab tab, int clusters = 8,
+                                  const ExactSteps* exact = nullptr) const;
   // `count` maximally different materials over every model (k-means over every grid node, each
   // with a grey rho_d and the rho_s that puts it at one common distance from matte grey). Each
   // neighbour's distance is from that matte grey material.
@@ -126,10 +140,12 @@ class Navigator {
  private:
   const ModelEmbedding& embedding_of(ModelId id) const;
   // A tab's offers in the order they were found, without their words.
-  std::vector<Neighbor> tab_offers(const Material& current, double radius, Tab tab,
-                                   int clusters) const;
-  std::vector<Neighbor> lobe_tab(const Material& current, double radius) const;
-  std::vector<Neighbor> models_tab(const Material& current, double radius, int clusters) const;
+  std::vector<Neighbor> tab_offers(const Material& current, double radius, Tab tab, int clusters,
+                                   const ExactSteps* exact) const;
+  std::vector<Neighbor> lobe_tab(const Material& current, double radius,
+                                 const ExactSteps* exact) const;
+  std::vector<Neighbor> models_tab(const Material& current, double radius, int clusters,
+                                   const ExactSteps* exact) const;
   std::vector<Neighbor> gallery_tab(const Eigen::VectorXf& from, int count) const;
   void build_gallery();
 
