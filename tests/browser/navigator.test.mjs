@@ -212,8 +212,25 @@ test('a larger radius moves the variations away', async () => {
     const before_ = near.find((n) => n.label === v.label);
     assert.ok(v.distance >= before_.distance - 1e-9, `${v.label}: ${before_.distance} -> ${v.distance}`);
     if (!before_.flags.includes('clamped')) assert.ok(v.distance > before_.distance, v.label);
+    // Exact steps (on by default): placed by rendering, within their 2% tolerance.
+    if (!v.flags.includes('clamped')) {
+      assert.ok(Math.abs(v.distance / large - 1) <= 0.02, `${v.label}: ${v.distance} for ${large}`);
+    }
+  }
+  // Without exact steps the database alone places them: at the embedded radius, to 1e-3.
+  assert.equal(await page.isChecked('#exact'), true);
+  await page.uncheck('#exact');
+  await settled();
+  const embedded = await variations();
+  assert.equal(embedded.length, far.length);
+  for (const v of embedded) {
     if (!v.flags.includes('clamped')) assert.ok(Math.abs(v.distance - large) < 1e-3 * large + 1e-4);
   }
+  // The same offers where the database's placement was already within the tolerance, but each
+  // exact distance is a render's, not the radius.
+  assert.ok(embedded.some((v) => far.find((f) => f.label === v.label).distance !== v.distance));
+  await page.check('#exact');
+  await settled();
   await selectTab('lobe');
   const lobeFar = await variations();
   await setSlider(30);
@@ -401,7 +418,7 @@ test('a progress indicator shows while thumbnails take longer than 100 ms', asyn
   });
   await page.keyboard.press('2');
   await page.waitForSelector('#progress:not([hidden])', { timeout: 2000 });
-  assert.match(await page.textContent('#progress'), /Rendering thumbnails \d+ \/ \d+|Finding/);
+  assert.match(await page.textContent('#progress'), /Rendering thumbnails \d+ \/ \d+|Finding|Rendering to place/);
   await shot('progress');
   await settled();
   assert.equal(await page.isVisible('#progress'), false);
