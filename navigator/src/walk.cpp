@@ -133,7 +133,7 @@ Hit refine_exactly(const Path& path, const Hit& hit, double radius, double start
   double hi = -1, f_hi = 0;                    // outside, once found
   double prev = 0, f_prev = f_lo;              // the point before the last, for the secant
   double s = hit.s;
-  Hit best{path.material(0), start_exact, true, 0};
+  Hit best = hit;             // replaced by the first render's answer
   std::optional<Hit> at_end;  // the path's end, once rendered
   int last = 0;               // which end of the bracket moved last: -1 lo, +1 hi
   for (int k = 0; k < steps.renders; ++k) {
