@@ -96,18 +96,12 @@ void check_image(const fs::path& path, const Manifest& m, const Image& diffuse,
 }
 
 ConversionTable load_conversion(const fs::path& dir, const ProfileGrid& a, ModelId to) {
-  const std::size_t cols = db::conversion_columns(to), dims = cols - 5;
+  const std::size_t cols = db::conversion_columns(to);
   const db::Table t = db::read_table(dir / db::conversion_file(a.model, to),
                                      std::uint32_t(a.grid.node_count()), std::uint32_t(cols));
   ConversionTable table{a.model, to, {}};
-  for (std::size_t n = 0; n < t.rows; ++n) {
-    Conversion c;
-    for (std::size_t i = 0; i < dims; ++i) c.params.push_back(t.at(n, i));
-    c.scale = Rgb(t.at(n, dims), t.at(n, dims + 1), t.at(n, dims + 2));
-    c.relative_error = t.at(n, cols - 2);
-    c.image_distance = t.at(n, cols - 1);
-    table.nodes.push_back(std::move(c));
-  }
+  for (std::size_t n = 0; n < t.rows; ++n)
+    table.nodes.push_back(db::read_conversion_row({&t.values[n * cols], cols}, to));
   return table;
 }
 

@@ -146,6 +146,30 @@ std::size_t conversion_columns(ModelId to) {
   return model_info(to).params.size() + 5;
 }
 
+void write_conversion_row(const Conversion& c, ModelId to, std::span<float> row) {
+  const std::size_t dims = model_info(to).params.size();
+  if (row.size() != conversion_columns(to) || c.params.size() != dims)
+    throw std::invalid_argument("conversion row: " + std::to_string(c.params.size()) +
+                                " parameters in a row of " + std::to_string(row.size()));
+  for (std::size_t i = 0; i < dims; ++i) row[i] = float(c.params[i]);
+  for (int k = 0; k < 3; ++k) row[dims + k] = float(c.scale[k]);
+  row[dims + 3] = float(c.relative_error);
+  row[dims + 4] = float(c.image_distance);
+}
+
+Conversion read_conversion_row(std::span<const float> row, ModelId to) {
+  const std::size_t dims = model_info(to).params.size();
+  if (row.size() != conversion_columns(to))
+    throw std::invalid_argument("conversion row of " + std::to_string(row.size()) +
+                                " values for a model of " + std::to_string(dims) + " parameters");
+  Conversion c;
+  c.params.assign(row.begin(), row.begin() + dims);
+  c.scale = Rgb(row[dims], row[dims + 1], row[dims + 2]);
+  c.relative_error = row[dims + 3];
+  c.image_distance = row[dims + 4];
+  return c;
+}
+
 std::vector<std::string> database_files(const std::vector<ProfileGrid>& grids) {
   std::vector<std::string> files{kDiffuseFile, kBasisFile, kSingularValuesFile};
   for (const ProfileGrid& a : grids) {

@@ -354,12 +354,9 @@ class Job {
       const Material source = node_material(a.model(), a.grid().node_values(n));
       const LobeFit fit = fit_lobe(make_lobe(source.model, source.params), b.model(), p_.fit);
       const Material fitted = node_material(b.model(), fit.params, fit.scale);
-      const double d = embedding_distance(a.embed(source), b.embed(fitted));
-      float* row = &t.values[n * cols];
-      for (std::size_t i = 0; i < fit.params.size(); ++i) row[i] = float(fit.params[i]);
-      for (int c = 0; c < 3; ++c) row[fit.params.size() + c] = float(fit.scale[c]);
-      row[cols - 2] = float(fit.relative_error);
-      row[cols - 1] = float(d);
+      const Conversion c{fit.params, fit.scale, fit.relative_error,
+                         embedding_distance(a.embed(source), b.embed(fitted))};
+      db::write_conversion_row(c, b.model(), {&t.values[n * cols], cols});
       const std::lock_guard lock(mutex);
       progress("fits", ++done, total);
     });

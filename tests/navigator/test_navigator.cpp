@@ -6,6 +6,7 @@
 
 #include <brdfnav/core/cielab.h>
 #include <brdfnav/io/material_yaml.h>
+#include <brdfnav/navigator/database_format.h>
 #include <brdfnav/navigator/navigation_yaml.h>
 #include <brdfnav/navigator/navigator.h>
 #include <gmock/gmock.h>
@@ -349,6 +350,24 @@ TEST(Navigator, ConversionsInterpolateTheTables) {
   const std::vector<Equivalent> eq = nav.equivalents(m);
   ASSERT_EQ(eq.size(), static_cast<std::size_t>(kModelCount - 1));
   for (const Equivalent& e : eq) EXPECT_DOUBLE_EQ(e.residual, nav.distance(m, e.material));
+}
+
+// The one definition of a conversion row: what the builder writes reads back field by field, and
+// a row of another model's width is refused.
+TEST(DatabaseFormat, ConversionRowsReadBackAsWritten) {
+  const Conversion c{{0.12, 0.34}, Rgb(0.5, 0.75, 1.25), 0.0625, 0.03125};
+  std::vector<float> row(db::conversion_columns(ModelId::ward));
+  ASSERT_EQ(row.size(), 7u);
+  db::write_conversion_row(c, ModelId::ward, row);
+  EXPECT_THAT(row, ::testing::ElementsAre(0.12f, 0.34f, 0.5f, 0.75f, 1.25f, 0.0625f, 0.03125f));
+  const Conversion back = db::read_conversion_row(row, ModelId::ward);
+  EXPECT_THAT(back.params, ::testing::ElementsAre(double(0.12f), double(0.34f)));
+  EXPECT_TRUE((back.scale == Rgb(0.5, 0.75, 1.25)).all());
+  EXPECT_EQ(back.relative_error, 0.0625);
+  EXPECT_EQ(back.image_distance, 0.03125);
+  EXPECT_THROW(db::read_conversion_row(row, ModelId::blinn_phong), std::invalid_argument);
+  EXPECT_THROW(db::write_conversion_row(c, ModelId::blinn_phong, std::span<float>(row).first(6)),
+               std::invalid_argument);
 }
 
 TEST(Navigator, ClusteringIsDeterministicAndIndependentOfThreads) {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <span>
 #include <string>
 #include <utility>
 #include <variant>
@@ -29,8 +30,8 @@ std::string coefficients_file(ModelId id);
 std::string conversion_file(ModelId from, ModelId to);
 // Every file of a database with these grids except the manifest, sorted.
 std::vector<std::string> database_files(const std::vector<ProfileGrid>& grids);
-// The models of a conversion table's columns: `to`'s parameters, scale RGB, relative error,
-// image distance.
+// The columns of a conversion table into `to`: one row per node of the source grid, holding
+// `to`'s parameters, scale RGB, relative error, image distance.
 std::size_t conversion_columns(ModelId to);
 
 // A row-major float32 matrix (see docs/DATABASE.md for the file layout).
@@ -40,6 +41,10 @@ struct Table {
   float at(std::size_t r, std::size_t c) const { return values[r * cols + c]; }
 };
 void write_table(const std::filesystem::path& path, const Table& table);
+// A conversion into `to` as a table row of conversion_columns(to) floats, and back: the one
+// place that knows where each field sits. std::invalid_argument when the sizes do not match.
+void write_conversion_row(const Conversion& c, ModelId to, std::span<float> row);
+Conversion read_conversion_row(std::span<const float> row, ModelId to);
 // Throws DatabaseError naming the file when it is unreadable, malformed or not rows x cols.
 Table read_table(const std::filesystem::path& path, std::uint32_t rows, std::uint32_t cols);
 // The rows and columns a table's header declares (a table's values unread). Throws DatabaseError
