@@ -5,55 +5,87 @@
 #include <brdfnav/precompute/render.h>
 
 #include <algorithm>
+#include <list>
+#include <map>
+#include <mutex>
 #include <optional>
+#include <string>
 
 namespace brdfnav::cli {
 
 struct ExactThumbnails::Impl {
+  // One resolution's renderer: it renders one image at a time.
+  struct Slot {
+    std::mutex mutex;
+    std::optional<Renderer> renderer;
+  };
+
   Impl(const Database& db, int res, std::size_t images)
-      : database(db), resolution(res), capacity(std::max<std::size_t>(1, images)) {}
+      : database(db),
+        resolution(res),
+        capacity_pixels(std::max<std::size_t>(1, images) * std::size_t(res) * std::size_t(res)) {}
 
   const Database& database;
   int resolution;
-  std::size_t capacity;
-  std::mutex render_mutex;  // the renderer renders one image at a time
+  std::size_t capacity_pixels;
+
+  std::mutex source_mutex;  // the map and the scene, loaded once for every slot
   std::optional<EnvMap> env;
   std::optional<Scene> scene;
-  std::optional<Renderer> renderer;
+  std::mutex slots_mutex;
+  std::map<int, Slot> slots;  // node-based: a slot stays where it is while others are added
+
+  // The cache of renders by (material, resolution), least recently used out first.
+  struct Entry {
+    std::shared_ptr<const Image> image;
+    std::list<std::string>::iterator use;
+  };
   std::mutex cache_mutex;
-  std::map<std::string, std::pair<std::shared_ptr<const Image>, std::list<std::string>::iterator>>
-      cache;
+  std::map<std::string, Entry> cache;
   std::list<std::string> uses;  // most recently used first
+  std::size_t cached_pixels = 0;
 
   std::shared_ptr<const Image> cached(const std::string& key) {
     const std::lock_guard lock(cache_mutex);
     const auto it = cache.find(key);
     if (it == cache.end()) return nullptr;
-    uses.splice(uses.begin(), uses, it->second.second);
-    return it->second.first;
+    uses.splice(uses.begin(), uses, it->second.use);
+    return it->second.image;
   }
 
   void keep(const std::string& key, std::shared_ptr<const Image> image) {
     const std::lock_guard lock(cache_mutex);
     if (cache.contains(key)) return;
     uses.push_front(key);
-    cache.emplace(key, std::make_pair(std::move(image), uses.begin()));
-    while (cache.size() > capacity) {
-      cache.erase(uses.back());
+    cached_pixels += image->rgba.size() / 4;
+    cache.emplace(key, Entry{std::move(image), uses.begin()});
+    while (cached_pixels > capacity_pixels && cache.size() > 1) {
+      const auto oldest = cache.find(uses.back());
+      cached_pixels -= oldest->second.image->rgba.size() / 4;
+      cache.erase(oldest);
       uses.pop_back();
     }
   }
 
-  Renderer& ready_renderer() {
-    if (!renderer) {
+  Slot& slot(int res) {
+    const std::lock_guard lock(slots_mutex);
+    return slots[res];
+  }
+
+  // The slot's renderer, made on first use; call with the slot's mutex held.
+  Renderer& ready_renderer(Slot& s, int res) {
+    if (!s.renderer) {
       const Manifest& m = database.manifest();
-      env.emplace(load_database_env(database));
-      scene.emplace(Scene::load(m.scene));
+      {
+        const std::lock_guard lock(source_mutex);
+        if (!env) env.emplace(load_database_env(database));
+        if (!scene) scene.emplace(Scene::load(m.scene));
+      }
       RenderOptions options;
       options.quality = make_profile(m.profile).quality;
-      renderer.emplace(*env, *scene, resolution, options);
+      s.renderer.emplace(*env, *scene, res, options);
     }
-    return *renderer;
+    return *s.renderer;
   }
 };
 
@@ -62,21 +94,31 @@ ExactThumbnails::ExactThumbnails(const Database& database, int resolution, std::
 
 ExactThumbnails::~ExactThumbnails() = default;
 
+int ExactThumbnails::resolution() const {
+  return impl_->resolution;
+}
+
 std::shared_ptr<const Image> ExactThumbnails::render(const Material& m) const {
+  return render(m, impl_->resolution);
+}
+
+std::shared_ptr<const Image> ExactThumbnails::render(const Material& m, int resolution) const {
   validate(m);
-  const std::string key = format_material_spec(m);
+  const std::string key = std::to_string(resolution) + " " + format_material_spec(m);
   if (auto image = impl_->cached(key)) return image;
-  const std::lock_guard lock(impl_->render_mutex);
+  Impl::Slot& slot = impl_->slot(resolution);
+  const std::lock_guard lock(slot.mutex);
   if (auto image = impl_->cached(key)) return image;  // rendered while this one waited
-  auto image = std::make_shared<const Image>(impl_->ready_renderer().render(m));
+  auto image = std::make_shared<const Image>(impl_->ready_renderer(slot, resolution).render(m));
   impl_->keep(key, image);
   return image;
 }
 
-ExactSteps ExactThumbnails::steps_from(const Material& current) const {
+ExactSteps ExactThumbnails::steps_from(const Material& current, int resolution) const {
+  const int res = resolution > 0 ? resolution : impl_->resolution;
   ExactSteps steps;
-  steps.distance = [this, current](const Material& m) {
-    return image_distance(*render(current), *render(m));
+  steps.distance = [this, current, res](const Material& m) {
+    return image_distance(*render(current, res), *render(m, res));
   };
   return steps;
 }

@@ -4,6 +4,7 @@
 
 #include <brdfnav/io/material_yaml.h>
 #include <brdfnav/navigator/navigation_yaml.h>
+#include <brdfnav/navigator/silhouette.h>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -162,6 +163,18 @@ bool read_flag(const json& request, const char* key) {
   return it->get<bool>();
 }
 
+// The "size" of a thumbnail: one of `sizes` (the first, the thumbnails' resolution, when absent).
+int read_size(const json& request, const std::vector<int>& sizes) {
+  const auto it = request.find("size");
+  if (it == request.end()) return sizes.front();
+  if (it->is_number_integer() &&
+      std::find(sizes.begin(), sizes.end(), it->get<int>()) != sizes.end())
+    return it->get<int>();
+  std::string list;
+  for (int s : sizes) list += (list.empty() ? "" : ", ") + std::to_string(s);
+  throw RequestError("size", "expected one of " + list + ", got " + shown(*it));
+}
+
 int read_clusters(const json& request) {
   const auto it = request.find("k");
   if (it == request.end()) return 8;
@@ -241,6 +254,23 @@ std::string encode_png(const std::vector<std::uint8_t>& rgba, int width, int hei
   return std::string(bytes.begin(), bytes.end());
 }
 
+// What the page shows of a linear image: its display encoding as a PNG whose alpha is the
+// coverage, not associated with the colour (PNG's own convention), so that a browser composites
+// the edge over whatever lies behind. The sphere's silhouette is antialiased first (the renderer's
+// mask is 0 or 1); a mesh's keeps its 0/1 mask.
+std::string display_png(Image image, bool sphere, const ocio::ColorPipeline& colour,
+                        const std::string& display, const std::string& view) {
+  if (sphere) antialias_sphere_silhouette(image);
+  std::vector<float> coverage(image.rgba.size() / 4);
+  for (std::size_t i = 0; i < coverage.size(); ++i)
+    coverage[i] = std::exchange(image.rgba[4 * i + 3], 1.f);  // no compositing by the pipeline
+  std::vector<std::uint8_t> rgba =
+      colour.apply(image.rgba.data(), image.width, image.height, display, view);
+  for (std::size_t i = 0; i < coverage.size(); ++i)
+    rgba[4 * i + 3] = std::uint8_t(std::lround(255.f * std::clamp(coverage[i], 0.f, 1.f)));
+  return encode_png(rgba, image.width, image.height);
+}
+
 // The API's paths: /api/info is read with GET (httplib answers HEAD with the GET handler and
 // drops the body), the others take a body with POST.
 struct Route {
@@ -282,12 +312,11 @@ ApiResponse error_response(int status, const std::string& message) {
 NavigatorApi::NavigatorApi(const ApiOptions& options)
     : navigator_(Navigator::open(options.db)),
       thumbnails_(navigator_.database(), options.resolution),
-      exact_(navigator_.database(), thumbnails_.resolution()),
-      metric_renders_(
-          thumbnails_.resolution() == navigator_.database().manifest().resolution
-              ? nullptr
-              : std::make_unique<ExactThumbnails>(navigator_.database(),
-                                                  navigator_.database().manifest().resolution)) {}
+      exact_(navigator_.database(), thumbnails_.resolution()) {
+  sizes_.push_back(thumbnails_.resolution());
+  for (int size : kSharpThumbnailSizes)
+    if (size > sizes_.front()) sizes_.push_back(size);
+}
 
 ApiResponse NavigatorApi::handle(const ApiRequest& r) const {
   const auto route = std::find_if(std::begin(kRoutes), std::end(kRoutes),
@@ -332,6 +361,7 @@ ApiResponse NavigatorApi::info() const {
          {"radius", {{"min", kRadiusMin}, {"max", kRadiusMax}, {"start", kRadiusStart}}},
          {"start", material_json(navigator_.start_material())},
          {"thumbnail_resolution", thumbnails_.resolution()},
+         {"thumbnail_sizes", sizes_},
          {"max_body_bytes", kMaxBodyBytes},
          {"database", database_json(db)}});
   });
@@ -345,7 +375,7 @@ ApiResponse NavigatorApi::neighbors(std::string_view body) const {
     const Tab tab = read_tab(require(request, "tab"));
     std::optional<ExactSteps> steps;
     if (read_flag(request, "exact"))
-      steps = (metric_renders_ ? *metric_renders_ : exact_).steps_from(current);
+      steps = exact_.steps_from(current, navigator_.database().manifest().resolution);
     json list = json::array();
     for (const Neighbor& n : navigator_.neighbors(current, radius, tab, read_clusters(request),
                                                   steps ? &*steps : nullptr))
@@ -356,16 +386,18 @@ ApiResponse NavigatorApi::neighbors(std::string_view body) const {
 
 ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
   return answer([&] {
-    const json request = parse_body(body, {"material", "display", "view", "preview"});
+    const json request = parse_body(body, {"material", "display", "view", "preview", "size"});
     const Material m = read_material(navigator_.database(), require(request, "material"));
     const auto [display, view] = read_display_view(colour_, request);
     const bool quick = read_flag(request, "preview");
+    const int size = read_size(request, sizes_);
+    if (quick && size != thumbnails_.resolution())
+      throw RequestError(
+          "size", "a preview is drawn at " + std::to_string(thumbnails_.resolution()) + " px only");
     const std::shared_ptr<const Image> rendered =
-        quick ? std::make_shared<const Image>(thumbnails_.render(m)) : exact_.render(m);
-    const Image& image = *rendered;
-    const std::vector<std::uint8_t> rgba =
-        colour_.apply(image.rgba.data(), image.width, image.height, display, view);
-    return ApiResponse{200, "image/png", encode_png(rgba, image.width, image.height)};
+        quick ? std::make_shared<const Image>(thumbnails_.render(m)) : exact_.render(m, size);
+    const bool sphere = navigator_.database().manifest().scene == "sphere";
+    return ApiResponse{200, "image/png", display_png(*rendered, sphere, colour_, display, view)};
   });
 }
 

@@ -30,6 +30,10 @@ inline constexpr std::size_t kMaxBodyBytes = 64 * 1024;
 // still sending it (fetch then fails instead of reading the 400).
 inline constexpr std::size_t kDrainedBodyBytes = 16 * kMaxBodyBytes;
 
+// Sizes of an exact thumbnail beside the thumbnails' resolution, for a large image on a screen
+// of high pixel density (the page's centre: 256 CSS pixels, 512 device pixels at a ratio of 2).
+inline constexpr int kSharpThumbnailSizes[] = {256, 512};
+
 struct ApiResponse {
   int status = 200;
   std::string content_type;
@@ -78,9 +82,11 @@ class NavigatorApi {
   // `radius` from the material's (ExactSteps, at the database's resolution), `distance` then
   // the rendered one: slower (a few renders per offer), and the ring's steps equal.
   ApiResponse neighbors(std::string_view body) const;
-  // POST /api/thumbnail {material[, display, view, preview]} -> image/png: the exact render of
-  // the material (ExactThumbnails), or with preview: true the quick blend of the database's
-  // images (Thumbnails).
+  // POST /api/thumbnail {material[, display, view, preview, size]} -> image/png: the exact
+  // render of the material (ExactThumbnails) at `size` (the thumbnails' resolution, or one of
+  // kSharpThumbnailSizes above it: /api/info's thumbnail_sizes), or with preview: true the quick
+  // blend of the database's images (Thumbnails) at the thumbnails' resolution. Alpha is the
+  // coverage, the sphere's edge antialiased.
   ApiResponse thumbnail(std::string_view body) const;
   // POST /api/export {material[, format]} -> what `brdfnav export --format FORMAT` writes
   // (yaml, the default: application/yaml; materialx: application/xml; cycles:
@@ -95,10 +101,10 @@ class NavigatorApi {
  private:
   Navigator navigator_;
   Thumbnails thumbnails_;
+  // The exact thumbnails at every size, and the renders of exact steps at the database's
+  // resolution (the metric's).
   ExactThumbnails exact_;
-  // Renders at the database's resolution, the metric's, for exact steps: exact_ itself when the
-  // thumbnails have that size.
-  std::unique_ptr<ExactThumbnails> metric_renders_;
+  std::vector<int> sizes_;  // of a thumbnail: the thumbnails' resolution first
   ocio::ColorPipeline colour_;
 };
 

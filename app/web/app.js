@@ -48,20 +48,22 @@ async function call(path, body, options = {}) {
   return response;
 }
 
-// Thumbnail object URLs by (material, display, view), least recently used first: going back, or
-// to a variation already on screen, shows its image at once.
+// Thumbnail object URLs by (material, display, view, preview, size), least recently used first:
+// going back, or to a variation already on screen, shows its image at once.
 const thumbnails = new Map();
 
 // The PNG of a material's thumbnail: the exact render, or with `preview` the quick blend of the
-// database's images that stands in while the exact one renders.
-function thumbnail(material, preview = false) {
-  const key = JSON.stringify([material, state.display, state.view, preview]);
+// database's images that stands in while the exact one renders. `size`: one of the server's
+// thumbnail_sizes, its resolution by default.
+function thumbnail(material, preview = false, size = undefined) {
+  const key = JSON.stringify([material, state.display, state.view, preview, size]);
   let url = thumbnails.get(key);
   if (url) {
     thumbnails.delete(key);  // now the most recently used
     thumbnails.set(key, url);
   } else {
-    url = call('/api/thumbnail', { material, display: state.display, view: state.view, preview })
+    url = call('/api/thumbnail',
+      { material, display: state.display, view: state.view, preview, size })
       .then((r) => r.blob())
       .then((blob) => URL.createObjectURL(blob));
     url.catch(() => thumbnails.delete(key));
@@ -162,10 +164,10 @@ function caption(n) {
   return span;
 }
 
-// The ring's geometry in CSS pixels. A variation is a 176 x 216 box (its 160 px image, padding
-// and two caption lines) placed by its image's centre, 84 px below the box's top; the centre's
+// The ring's geometry in CSS pixels. A variation is a 176 x 232 box (its 160 px image, padding
+// and three caption lines: a name of up to two, its distance) placed by its image's centre, 84 px below the box's top; the centre's
 // 256 px image and caption take -128..128 across and -128..162 down around the middle.
-const BOX = { width: 176, height: 216, above: 84 };
+const BOX = { width: 176, height: 232, above: 84 };
 const CENTRE = { left: -128, right: 128, top: -128, bottom: 162 };
 const MAX_RX = 408;  // a stage of 2 * 408 + 176 = 992 px fits a 1024 px window
 
@@ -274,13 +276,30 @@ async function progressive(img, material, gen) {
   await show(img, thumbnail(material), gen);
 }
 
+// The size of the centre's sharp render: the smallest the server offers that fills the centre's
+// 256 CSS pixels in device pixels (512 at a device pixel ratio of 2), else its largest.
+function sharpSize() {
+  const wanted = 256 * (window.devicePixelRatio || 1);
+  const sizes = state.info.thumbnail_sizes;
+  return sizes.find((s) => s >= wanted - 0.5) ?? sizes[sizes.length - 1];
+}
+
+// Once the ring is on screen: the centre at sharpSize() in place of its render at the
+// thumbnails' resolution. <img data-size> says which is shown.
+async function sharpen(img, material, gen) {
+  const size = sharpSize();
+  if (size <= state.info.thumbnail_resolution) return;
+  await show(img, thumbnail(material, false, size), gen);
+  if (gen === generation) img.dataset.size = String(size);
+}
+
 function showError(message) {
   $('#error').textContent = message;
   $('#error').hidden = !message;
 }
 
-// Redraws the stage for the current material, tab, radius and display. Resolves when every
-// image is on screen; <body data-ready> says so to tests.
+// Redraws the stage for the current material, tab, radius and display. <body data-ready> says
+// to tests when every image is on screen; the centre's sharp render comes after.
 async function redraw() {
   const gen = ++generation;
   const material = state.history[state.at];
@@ -293,6 +312,7 @@ async function redraw() {
   centre.dataset.material = JSON.stringify(material);
   centre.querySelector('figcaption').textContent = modelInfo(material.model).title;
   centre.querySelector('img').alt = describe(material);
+  centre.querySelector('img').dataset.size = String(state.info.thumbnail_resolution);
   drawReadout(material);
   freezeRing();
   neighborQuery?.abort();
@@ -316,6 +336,10 @@ async function redraw() {
       ...images.map(([n, img]) => progressive(img, n.material, gen).then(step))]);
     if (gen !== generation) return;
     showError('');
+    progress.stop();
+    document.body.dataset.ready = 'true';
+    await sharpen(centre.querySelector('img'), material, gen);
+    return;
   } catch (error) {
     if (error.name === 'AbortError' || gen !== generation) return;
     if ($('#ring').hasAttribute('aria-busy')) clearRing();  // still the previous state's ring

@@ -3,12 +3,16 @@
 // browser test cannot make as easily, such as very long names and every wrong method.
 #include "serve_api.h"
 
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace brdfnav::cli {
 namespace {
@@ -103,6 +107,56 @@ TEST(ServeApi, ThumbnailsAreExactUnlessAPreviewIsAskedFor) {
   const ApiResponse bad = call("POST", "/api/thumbnail", between + R"(, "preview": "yes"})");
   EXPECT_EQ(bad.status, 400);
   EXPECT_EQ(error_of(bad).rfind("preview: expected true or false", 0), 0u) << error_of(bad);
+}
+
+// The alpha channel of a PNG, and its size.
+struct Alpha {
+  int width = 0, height = 0;
+  std::vector<unsigned char> values;
+};
+Alpha png_alpha(const std::string& png) {
+  OIIO::Filesystem::IOMemReader memory(png.data(), png.size());
+  const std::unique_ptr<OIIO::ImageInput> in =
+      OIIO::ImageInput::open("thumbnail.png", nullptr, &memory);
+  EXPECT_TRUE(in) << OIIO::geterror();
+  if (!in) return {};
+  const OIIO::ImageSpec& spec = in->spec();
+  EXPECT_EQ(spec.nchannels, 4);
+  std::vector<unsigned char> rgba(std::size_t(spec.width) * spec.height * 4);
+  EXPECT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, rgba.data())) << in->geterror();
+  Alpha a{spec.width, spec.height, {}};
+  for (std::size_t i = 3; i < rgba.size(); i += 4) a.values.push_back(rgba[i]);
+  return a;
+}
+
+// An exact thumbnail comes in the sizes /api/info lists (the thumbnails' resolution, then 256
+// and 512), its alpha the sphere's coverage: partial along the edge, 0 in the corners, the disk's
+// area in all; a preview only at the thumbnails' resolution; any other size is refused naming
+// the sizes.
+TEST(ServeApi, ThumbnailsComeInTheListedSizesWithAntialiasedEdges) {
+  const auto info = nlohmann::json::parse(call("GET", "/api/info").body);
+  EXPECT_EQ(info.at("thumbnail_sizes"), nlohmann::json::parse("[8, 256, 512]"));
+  const std::string material = R"({"material": )" + kMaterial;
+  const ApiResponse large = call("POST", "/api/thumbnail", material + R"(, "size": 256})");
+  ASSERT_EQ(large.status, 200) << large.body;
+  const Alpha a = png_alpha(large.body);
+  ASSERT_EQ(a.width, 256);
+  ASSERT_EQ(a.height, 256);
+  double area = 0;
+  int partial = 0;
+  for (unsigned char v : a.values) area += v / 255.0, partial += v > 0 && v < 255;
+  EXPECT_NEAR(area, 3.14159265358979 * 128 * 128, 0.001 * 128 * 128 * 3.14159265358979);
+  EXPECT_GT(partial, 500);  // about 4 x 256 / sqrt(2) pixels are crossed by the edge
+  EXPECT_EQ(a.values.front(), 0);
+  EXPECT_EQ(a.values.back(), 0);
+  EXPECT_EQ(png_alpha(call("POST", "/api/thumbnail", material + "}").body).width, 8);
+  const ApiResponse odd = call("POST", "/api/thumbnail", material + R"(, "size": 100})");
+  EXPECT_EQ(odd.status, 400);
+  EXPECT_EQ(error_of(odd), "size: expected one of 8, 256, 512, got 100");
+  const ApiResponse preview =
+      call("POST", "/api/thumbnail", material + R"(, "size": 256, "preview": true})");
+  EXPECT_EQ(preview.status, 400);
+  EXPECT_EQ(error_of(preview), "size: a preview is drawn at 8 px only");
 }
 
 // Exact steps: each offer of the lobe tab moved until its render is at the radius from the

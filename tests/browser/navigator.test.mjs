@@ -276,14 +276,18 @@ test('every tab offers its own variations', async () => {
 test('the ring fits a 1024 px window: opposites face each other, nothing overlaps or is cut', async () => {
   await page.setViewportSize({ width: 1024, height: 768 });
   try {
-    for (const tab of ['diffuse', 'lobe', 'gallery']) {
+    for (const tab of ['diffuse', 'lobe', 'models', 'gallery']) {
       await selectTab(tab);
       const boxes = await page.locator('.variation').evaluateAll((buttons) => buttons.map((b) => {
         const r = b.getBoundingClientRect();
         const img = b.querySelector('img').getBoundingClientRect();
         return { left: r.left, right: r.right, top: r.top, bottom: r.bottom, image: img.width,
           x: (img.left + img.right) / 2, y: (img.top + img.bottom) / 2,
-          words: b.querySelector('.caption b').textContent, title: b.title };
+          words: b.querySelector('.caption b').textContent, title: b.title,
+          // Caption lines whose text does not fit their box (cut, or under an ellipsis).
+          cut: [...b.querySelectorAll('.caption > *')].filter((e) =>
+            e.scrollWidth > e.clientWidth + 1 || e.scrollHeight > e.clientHeight + 1)
+            .map((e) => e.textContent) };
       }));
       const c = await page.locator('#centre img').evaluate((img) => {
         const r = img.getBoundingClientRect();
@@ -294,6 +298,7 @@ test('the ring fits a 1024 px window: opposites face each other, nothing overlap
       for (const [i, b] of boxes.entries()) {
         assert.ok(b.image >= 160, `${tab} ${b.words}: ${b.image} px`);
         assert.ok(b.left >= 0 && b.right <= 1024, `${tab} ${b.words}: ${b.left}..${b.right}`);
+        assert.deepEqual(b.cut, [], `${tab} ${b.words}: caption cut`);
         assert.doesNotMatch(b.words, /^(L[+-]|ab\+\d+|\w+[+-])$/, 'words, not labels');
         assert.ok(b.title.length > b.words.length, `${tab} ${b.words}: tooltip '${b.title}'`);
         // Neither on the centre's image nor on another variation.
@@ -302,8 +307,8 @@ test('the ring fits a 1024 px window: opposites face each other, nothing overlap
         assert.ok(apart(b, c), `${tab} ${b.words} covers the centre`);
         for (const o of boxes.slice(0, i)) assert.ok(apart(b, o), `${tab} ${b.words} / ${o.words}`);
         // The images of offers i and i + n/2 mirror each other through the centre's image (the
-        // service's ring order).
-        if (tab !== 'gallery' && i < boxes.length / 2) {
+        // service's ring order; the models and the gallery have no opposites).
+        if (tab !== 'gallery' && tab !== 'models' && i < boxes.length / 2) {
           const o = boxes[i + boxes.length / 2];
           assert.ok(Math.abs((b.x + o.x) / 2 - mid[0]) < 2, `${tab} ${b.words} / ${o.words}`);
           assert.ok(Math.abs((b.y + o.y) / 2 - mid[1]) < 2, `${tab} ${b.words} / ${o.words}`);
@@ -518,6 +523,61 @@ test('the radius slider and the centre image describe their values', async () =>
   }
 });
 
+test('at a device pixel ratio of 2 the centre is sharp and every silhouette antialiased', async () => {
+  const sharp = await chromium.launch({ executablePath: CHROMIUM, headless: true,
+    args: CHROMIUM_ARGS });
+  try {
+    const retina = await sharp.newPage({ viewport: { width: 1400, height: 950 },
+      deviceScaleFactor: 2 });
+    await retina.goto(url);
+    await retina.waitForFunction(() => document.body.dataset.ready === 'true', null,
+      { timeout: 60000 });
+    // After the ring, the centre's render at 512 px: one image pixel per device pixel.
+    await retina.waitForSelector('#centre img[data-size="512"]', { timeout: 120000 });
+    const images = await retina.evaluate(() => {
+      // Alpha of an image's pixels: how many are neither 0 nor 1 (the edge's partial coverage),
+      // and the alpha of the corners (the margin around the sphere).
+      const alpha = (img) => {
+        const canvas = document.createElement('canvas');
+        canvas.width = img.naturalWidth;
+        canvas.height = img.naturalHeight;
+        const context = canvas.getContext('2d');
+        context.drawImage(img, 0, 0);
+        const { data } = context.getImageData(0, 0, canvas.width, canvas.height);
+        let partial = 0;
+        for (let i = 3; i < data.length; i += 4) partial += data[i] > 0 && data[i] < 255;
+        const w = canvas.width;
+        return { width: w, partial, corner: data[3] + data[4 * (w - 1) + 3] };
+      };
+      const centre = document.querySelector('#centre img');
+      const box = centre.getBoundingClientRect();
+      const style = getComputedStyle(centre);
+      return {
+        centre: alpha(centre),
+        box: box.width,
+        content: box.width - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight),
+        ring: [...document.querySelectorAll('.variation img')].map(alpha),
+      };
+    });
+    assert.equal(images.centre.width, 512);
+    assert.ok(images.box >= 256, `centre box ${images.box} px`);
+    // The sphere's 512 pixels across fill the content box at 2 device pixels per CSS pixel or
+    // more densely: nothing is magnified.
+    assert.ok(2 * images.content <= 512, `centre content ${images.content} px`);
+    // A circle of 512 px crosses about 4 x 512 / sqrt(2) ~ 1450 pixels partly.
+    assert.ok(images.centre.partial > 1000, `centre: ${images.centre.partial} partial pixels`);
+    assert.equal(images.centre.corner, 0);
+    assert.ok(images.ring.length > 0);
+    for (const r of images.ring) {
+      assert.ok(r.partial > 0, `variation of ${r.width} px: no partial pixel`);
+      assert.equal(r.corner, 0);
+    }
+    await retina.screenshot({ path: path.join(artefacts, 'dpr2-centre.png') });
+  } finally {
+    await sharp.close();
+  }
+});
+
 // ---- the API's answers to bad requests ---------------------------------------------------------
 
 test('bad API requests get 400 naming the field, and the server keeps serving', async () => {
@@ -567,6 +627,8 @@ test('bad API requests get 400 naming the field, and the server keeps serving', 
     ['/api/thumbnail', body({ material: m, display: 'nope' }), /^display: /],
     ['/api/thumbnail', body({ material: m, view: 'nope' }), /^view: /],
     ['/api/thumbnail', body({ display: 'sRGB' }), /^material: missing/],
+    ['/api/thumbnail', body({ material: m, size: 100 }), /^size: expected one of \d+, 256, 512/],
+    ['/api/thumbnail', body({ material: m, size: 256, preview: true }), /^size: a preview/],
     ['/api/export', body({ material: { ...m, colorspace: '' } }), /^material:\d+: colorspace: /],
     ['/api/export', body({ material: { ...m, colorspace: 'lin\ufdd0' } }),
       /^material:\d+: colorspace: byte 3 is not allowed/],
