@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iterator>
 #include <optional>
@@ -163,6 +164,30 @@ bool read_flag(const json& request, const char* key) {
   return it->get<bool>();
 }
 
+// The optional {"client": "<page id>", "id": <ring number>} of a request: the work of a ring
+// the page has left is dropped (serve_rings.h).
+std::optional<RingId> read_ring(const json& request) {
+  const auto it = request.find("ring");
+  if (it == request.end()) return std::nullopt;
+  const auto bad = [&] {
+    return RequestError("ring",
+                        "expected {\"client\": a string of 1 to 64 letters, digits, '-' "
+                        "or '_', \"id\": an integer of at least 0}, got " +
+                            shown(*it));
+  };
+  if (!it->is_object() || it->size() != 2 || !it->contains("client") || !it->contains("id"))
+    throw bad();
+  const json& client = it->at("client");
+  const json& id = it->at("id");
+  if (!client.is_string() || !id.is_number_unsigned()) throw bad();
+  const std::string name = client.get<std::string>();
+  const bool word = std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_';
+  });
+  if (name.empty() || name.size() > 64 || !word) throw bad();
+  return RingId{name, id.get<std::uint64_t>()};
+}
+
 // The "size" of a thumbnail: one of `sizes` (the first, the thumbnails' resolution, when absent).
 int read_size(const json& request, const std::vector<int>& sizes) {
   const auto it = request.find("size");
@@ -298,6 +323,8 @@ ApiResponse answer(Body&& body) {
     return error_response(400, e.what());
   } catch (const NavigatorError& e) {
     return error_response(400, e.what());
+  } catch (const RingLeft& e) {
+    return error_response(409, e.what());
   } catch (const std::exception& e) {
     return error_response(500, e.what());
   }
@@ -369,13 +396,16 @@ ApiResponse NavigatorApi::info() const {
 
 ApiResponse NavigatorApi::neighbors(std::string_view body) const {
   return answer([&] {
-    const json request = parse_body(body, {"material", "radius", "tab", "k", "exact"});
+    const json request = parse_body(body, {"material", "radius", "tab", "k", "exact", "ring"});
     const Material current = read_material(navigator_.database(), require(request, "material"));
     const double radius = read_radius(require(request, "radius"));
     const Tab tab = read_tab(require(request, "tab"));
+    const std::optional<RingId> ring = read_ring(request);
+    if (ring) rings_.enter(*ring);
     std::optional<ExactSteps> steps;
     if (read_flag(request, "exact"))
-      steps = exact_.steps_from(current, navigator_.database().manifest().resolution);
+      steps = exact_.steps_from(current, navigator_.database().manifest().resolution,
+                                ring ? rings_.check(*ring) : nullptr);
     json list = json::array();
     for (const Neighbor& n : navigator_.neighbors(current, radius, tab, read_clusters(request),
                                                   steps ? &*steps : nullptr))
@@ -386,7 +416,8 @@ ApiResponse NavigatorApi::neighbors(std::string_view body) const {
 
 ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
   return answer([&] {
-    const json request = parse_body(body, {"material", "display", "view", "preview", "size"});
+    const json request =
+        parse_body(body, {"material", "display", "view", "preview", "size", "ring"});
     const Material m = read_material(navigator_.database(), require(request, "material"));
     const auto [display, view] = read_display_view(colour_, request);
     const bool quick = read_flag(request, "preview");
@@ -394,8 +425,11 @@ ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
     if (quick && size != thumbnails_.resolution())
       throw RequestError(
           "size", "a preview is drawn at " + std::to_string(thumbnails_.resolution()) + " px only");
+    const std::optional<RingId> ring = read_ring(request);
+    if (ring) rings_.enter(*ring);
     const std::shared_ptr<const Image> rendered =
-        quick ? std::make_shared<const Image>(thumbnails_.render(m)) : exact_.render(m, size);
+        quick ? std::make_shared<const Image>(thumbnails_.render(m))
+              : exact_.render(m, size, ring ? rings_.check(*ring) : nullptr);
     const bool sphere = navigator_.database().manifest().scene == "sphere";
     return ApiResponse{200, "image/png", display_png(*rendered, sphere, colour_, display, view)};
   });

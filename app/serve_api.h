@@ -4,6 +4,7 @@
 #pragma once
 
 #include "exact_thumbnails.h"
+#include "serve_rings.h"
 
 #include <brdfnav/navigator/navigator.h>
 #include <brdfnav/navigator/thumbnails.h>
@@ -77,10 +78,12 @@ class NavigatorApi {
   // GET /api/info: models and parameter tables, tabs, displays and views, radius range, the
   // start material and the database's provenance.
   ApiResponse info() const;
-  // POST /api/neighbors {material, radius, tab[, k, exact]} -> {neighbors: [{tab, label,
+  // POST /api/neighbors {material, radius, tab[, k, exact, ring]} -> {neighbors: [{tab, label,
   // distance, flags, material}]}. With exact: true each offer moves until its render is at
   // `radius` from the material's (ExactSteps, at the database's resolution), `distance` then
-  // the rendered one: slower (a few renders per offer), and the ring's steps equal.
+  // the rendered one: slower (a few renders per offer), and the ring's steps equal. `ring`
+  // ({client, id}), here and in /api/thumbnail: once the same client asks for a later ring, the
+  // renders still to start for this one are dropped and the answer is 409.
   ApiResponse neighbors(std::string_view body) const;
   // POST /api/thumbnail {material[, display, view, preview, size]} -> image/png: the exact
   // render of the material (ExactThumbnails) at `size` (the thumbnails' resolution, or one of
@@ -105,6 +108,7 @@ class NavigatorApi {
   // resolution (the metric's).
   ExactThumbnails exact_;
   std::vector<int> sizes_;  // of a thumbnail: the thumbnails' resolution first
+  mutable LeftRings rings_;
   ocio::ColorPipeline colour_;
 };
 

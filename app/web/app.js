@@ -52,29 +52,40 @@ async function call(path, body, options = {}) {
 // going back, or to a variation already on screen, shows its image at once.
 const thumbnails = new Map();
 
-// The PNG of a material's thumbnail: the exact render, or with `preview` the quick blend of the
-// database's images that stands in while the exact one renders. `size`: one of the server's
-// thumbnail_sizes, its resolution by default.
-function thumbnail(material, preview = false, size = undefined) {
+// This page's name for the server, which drops the renders of the rings it has left: every
+// query and exact thumbnail carries `ring: {client, id: generation}` (docs/SERVE.md).
+const CLIENT = (crypto.randomUUID?.() ?? `${Date.now()}-${Math.random()}`).replace(/[^\w-]/g, '');
+const ring = (gen) => ({ client: CLIENT, id: gen });
+
+// The PNG of a material's thumbnail for the ring `gen`: the exact render, or with `preview` the
+// quick blend of the database's images that stands in while the exact one renders. `size`: one
+// of the server's thumbnail_sizes, its resolution by default.
+function thumbnail(material, gen, preview = false, size = undefined) {
   const key = JSON.stringify([material, state.display, state.view, preview, size]);
-  let url = thumbnails.get(key);
-  if (url) {
+  let entry = thumbnails.get(key);
+  // Still on its way for a ring left since, which the server may drop: asked again for this one
+  // (if it is being rendered, the server answers both from one render).
+  if (entry && entry.pending && entry.gen < gen) entry = undefined;
+  if (entry) {
     thumbnails.delete(key);  // now the most recently used
-    thumbnails.set(key, url);
-  } else {
-    url = call('/api/thumbnail',
-      { material, display: state.display, view: state.view, preview, size })
-      .then((r) => r.blob())
-      .then((blob) => URL.createObjectURL(blob));
-    url.catch(() => thumbnails.delete(key));
-    thumbnails.set(key, url);
-    if (thumbnails.size > THUMBNAIL_CACHE) {
-      const [oldest, old] = thumbnails.entries().next().value;
-      thumbnails.delete(oldest);
-      old.then(URL.revokeObjectURL, () => {});
-    }
+    thumbnails.set(key, entry);
+    return entry.url;
   }
-  return url;
+  entry = { gen, pending: true };
+  entry.url = call('/api/thumbnail', { material, display: state.display, view: state.view,
+    preview, size, ring: ring(gen) })
+    .then((r) => r.blob())
+    .then((blob) => URL.createObjectURL(blob));
+  entry.url.then(() => { entry.pending = false; }, () => {
+    if (thumbnails.get(key) === entry) thumbnails.delete(key);
+  });
+  thumbnails.set(key, entry);
+  if (thumbnails.size > THUMBNAIL_CACHE) {
+    const [oldest, old] = thumbnails.entries().next().value;
+    thumbnails.delete(oldest);
+    old.url.then(URL.revokeObjectURL, () => {});
+  }
+  return entry.url;
 }
 
 // ---- progress: shown only when the work takes longer than PROGRESS_DELAY_MS -----------------
@@ -272,8 +283,8 @@ function notify(message) {
 
 // The preview first, then the exact render in its place; resolves when the exact one is shown.
 async function progressive(img, material, gen) {
-  await show(img, thumbnail(material, true), gen);
-  await show(img, thumbnail(material), gen);
+  await show(img, thumbnail(material, gen, true), gen);
+  await show(img, thumbnail(material, gen), gen);
 }
 
 // The size of the centre's sharp render: the smallest the server offers that fills the centre's
@@ -289,7 +300,7 @@ function sharpSize() {
 async function sharpen(img, material, gen) {
   const size = sharpSize();
   if (size <= state.info.thumbnail_resolution) return;
-  await show(img, thumbnail(material, false, size), gen);
+  await show(img, thumbnail(material, gen, false, size), gen);
   if (gen === generation) img.dataset.size = String(size);
 }
 
@@ -324,7 +335,7 @@ async function redraw() {
     const centreShown = progressive(centre.querySelector('img'), material, gen);
     centreShown.catch(() => {});  // awaited below, unless this redraw is overtaken first
     const { neighbors } = await (await call('/api/neighbors',
-      { material, radius: state.radius, tab: state.tab, exact },
+      { material, radius: state.radius, tab: state.tab, exact, ring: ring(gen) },
       { signal: neighborQuery.signal })).json();
     if (gen !== generation) return;
     const images = drawRing(neighbors);

@@ -159,6 +159,61 @@ TEST(ServeApi, ThumbnailsComeInTheListedSizesWithAntialiasedEdges) {
   EXPECT_EQ(error_of(preview), "size: a preview is drawn at 8 px only");
 }
 
+// A page numbers its rings; once it asks for a later one, the renders an earlier ring still
+// waits for are dropped (409), while what is cached, or asked for by another page, comes back;
+// a malformed ring is refused naming it.
+TEST(ServeApi, TheRendersOfARingThePageHasLeftAreDropped) {
+  const auto thumbnail = [](double alpha, const std::string& ring) {
+    return call("POST", "/api/thumbnail",
+                R"({"material": {"model": "ward", "params": {"alpha_x": )" + std::to_string(alpha) +
+                    R"(, "alpha_y": 0.05}, "rho_d": [0.2, 0.2, 0.2], "rho_s": [0.04, 0.04, 0.04],)"
+                    R"( "colorspace": "lin_rec709"}, "ring": )" +
+                    ring + "}");
+  };
+  ASSERT_EQ(thumbnail(0.11, R"({"client": "page-a", "id": 1})").status, 200);
+  ASSERT_EQ(thumbnail(0.12, R"({"client": "page-a", "id": 2})").status, 200);
+  // Ring 1 is left: a render it would start is dropped, a cached image still answered.
+  const ApiResponse left = thumbnail(0.13, R"({"client": "page-a", "id": 1})");
+  EXPECT_EQ(left.status, 409);
+  EXPECT_EQ(error_of(left), "ring: 1 of this page was left for a later one");
+  EXPECT_EQ(thumbnail(0.11, R"({"client": "page-a", "id": 1})").status, 200);
+  // Another page, and the current ring, render.
+  EXPECT_EQ(thumbnail(0.13, R"({"client": "page-b", "id": 1})").status, 200);
+  EXPECT_EQ(thumbnail(0.14, R"({"client": "page-a", "id": 2})").status, 200);
+  // Exact steps of a left ring stop before their first render.
+  const ApiResponse steps = call(
+      "POST", "/api/neighbors",
+      R"({"material": {"model": "ward", "params": {"alpha_x": 0.21, "alpha_y": 0.05},)"
+      R"( "rho_d": [0.2, 0.2, 0.2], "rho_s": [0.04, 0.04, 0.04], "colorspace": "lin_rec709"},)"
+      R"( "radius": 0.02, "tab": "lobe", "exact": true, "ring": {"client": "page-a", "id": 1}})");
+  EXPECT_EQ(steps.status, 409) << steps.body;
+  for (const char* bad : {R"("x")", R"({"client": "page-a"})", R"({"client": "", "id": 1})",
+                          R"({"client": "a b", "id": 1})", R"({"client": "a", "id": -1})",
+                          R"({"client": "a", "id": 1, "more": 2})"}) {
+    const ApiResponse refused = thumbnail(0.1, bad);
+    EXPECT_EQ(refused.status, 400) << bad;
+    EXPECT_EQ(error_of(refused).rfind("ring: expected {", 0), 0u) << error_of(refused);
+  }
+}
+
+// The pages it remembers: the least recently heard from is forgotten first, and a late request
+// of an older ring moves nothing back.
+TEST(LeftRings, RemembersTheLatestRingOfTheMostRecentPages) {
+  LeftRings rings(2);
+  rings.enter({"a", 5});
+  rings.enter({"a", 3});
+  EXPECT_TRUE(rings.left({"a", 4}));
+  EXPECT_FALSE(rings.left({"a", 5}));
+  EXPECT_THROW(rings.check({"a", 4})(), RingLeft);
+  EXPECT_NO_THROW(rings.check({"a", 5})());
+  rings.enter({"b", 1});
+  rings.enter({"a", 6});  // a heard from again: b is the least recent
+  rings.enter({"c", 1});
+  EXPECT_FALSE(rings.left({"b", 0}));  // forgotten
+  EXPECT_TRUE(rings.left({"a", 5}));
+  EXPECT_TRUE(rings.left({"c", 0}));
+}
+
 // Exact steps: each offer of the lobe tab moved until its render is at the radius from the
 // material's (at the database's resolution, not the thumbnails'): unflagged ones within 2%,
 // their distances the rendered ones, not the embedding's; an `exact` that is not a boolean is

@@ -496,6 +496,28 @@ test('quick clicks add one history entry, from the ring on screen', async () => 
   assert.deepEqual(await centre(), before_);
 });
 
+test('every query and thumbnail names its ring, so that the server drops the rings left', async () => {
+  const rings = [];
+  const record = (request) => {
+    if (!/\/api\/(neighbors|thumbnail)$/.test(request.url())) return;
+    rings.push({ path: new URL(request.url()).pathname, ...JSON.parse(request.postData()).ring });
+  };
+  page.on('request', record);
+  try {
+    await selectTab('diffuse');
+    await selectTab('lobe');
+  } finally {
+    page.off('request', record);
+  }
+  assert.ok(rings.some((r) => r.path === '/api/neighbors'));
+  assert.ok(rings.some((r) => r.path === '/api/thumbnail'));
+  assert.equal(new Set(rings.map((r) => r.client)).size, 1, 'one client id per page');
+  assert.match(rings[0].client, /^[\w-]{1,64}$/);
+  // The lobe tab's ring comes after the diffuse tab's.
+  const ids = rings.filter((r) => r.path === '/api/neighbors').map((r) => r.id);
+  assert.ok(ids.length === 2 && ids[1] > ids[0], `rings ${ids}`);
+});
+
 test('a variation chosen with the keyboard leaves the focus on the new ring', async () => {
   const before_ = await centre();
   const move = (await variations()).findIndex(
