@@ -181,5 +181,19 @@ TEST_F(CAbiNavigator, ReportsBadQueriesWithStatusAndMessage) {
   c.navigator_close(nullptr);
 }
 
+// The library reports the header's version, and the loader's check refuses it for a host built
+// against another: version 1, before brdfnav_neighbor gained words, change and opposite.
+TEST(CAbiNavigatorVersion, IsTheHeadersAndALoaderOfAnotherRefusesIt) {
+  static_assert(BRDFNAV_NAVIGATOR_ABI_VERSION == 2);
+  EXPECT_NO_THROW(test::open_library(BRDFNAV_NAVIGATOR_PATH, "brdfnav_navigator_abi_version",
+                                     BRDFNAV_NAVIGATOR_ABI_VERSION));
+  try {
+    test::open_library(BRDFNAV_NAVIGATOR_PATH, "brdfnav_navigator_abi_version", 1);
+    ADD_FAILURE() << "a library of version 2 was accepted for version 1";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("ABI version 2, expected 1"));
+  }
+}
+
 }  // namespace
 }  // namespace brdfnav

@@ -18,9 +18,11 @@
 
 #include <stddef.h>
 
-/* 1: the navigator of brdfnav.h's ABI 2, in a library of its own, with its own version and
- * error message. */
-#define BRDFNAV_NAVIGATOR_ABI_VERSION 1
+/* 1: the navigator, moved out of libbrdfnav.so (brdfnav.h's ABI 3) into a library of its own,
+ *    with its own version and error message.
+ * 2: brdfnav_neighbor gained words, change and opposite (a change of its layout that version 1
+ *    did not mark). */
+#define BRDFNAV_NAVIGATOR_ABI_VERSION 2
 
 #ifdef __cplusplus
 extern "C" {
