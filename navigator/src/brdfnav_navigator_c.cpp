@@ -4,15 +4,41 @@
 
 #include <brdfnav/io/c_abi.h>
 #include <brdfnav/io/material_yaml.h>
+#include <brdfnav/navigator/display_thumbnails.h>
 #include <brdfnav/navigator/navigator.h>
+#include <brdfnav/navigator/thumbnails.h>
 
+#include <algorithm>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 struct brdfnav_navigator {
+  // The display thumbnails at the database's resolution, and the config's displays and views as
+  // the C strings the ABI hands out. Made by the first call that needs them (colour_of()): a host
+  // that only navigates never loads an OCIO config.
+  struct Colour {
+    explicit Colour(const brdfnav::Database& database)
+        : thumbnails(database, 0), display(thumbnails) {
+      for (std::string& d : display.pipeline().displays()) {
+        views.push_back(display.pipeline().views(d));
+        displays.push_back(std::move(d));
+      }
+    }
+    brdfnav::Thumbnails thumbnails;
+    brdfnav::DisplayThumbnails display;
+    std::vector<std::string> displays;
+    std::vector<std::vector<std::string>> views;  // views[i]: those of displays[i]
+  };
+
+  explicit brdfnav_navigator(brdfnav::Navigator n) : navigator(std::move(n)) {}
+
   brdfnav::Navigator navigator;
+  mutable std::mutex colour_mutex;
+  mutable std::unique_ptr<const Colour> colour;  // set once, then immutable
 };
 
 struct brdfnav_neighbors {
@@ -78,6 +104,63 @@ brdfnav_status list_query(const brdfnav_navigator* navigator, brdfnav_neighbors*
   });
 }
 
+using Colour = brdfnav_navigator::Colour;
+
+// The navigator's display thumbnails, made on first use. A config that does not load is the
+// host's environment ($OCIO), not a bad argument: BRDFNAV_ERROR_IO, and the next call tries again.
+const Colour& colour_of(const brdfnav_navigator* navigator) {
+  require(navigator, "navigator");
+  std::lock_guard lock(navigator->colour_mutex);
+  if (!navigator->colour) {
+    try {
+      navigator->colour = std::make_unique<const Colour>(navigator->navigator.database());
+    } catch (const ocio::ColorError& e) {
+      throw AbiError(BRDFNAV_ERROR_IO, e.what());
+    }
+  }
+  return *navigator->colour;
+}
+
+// Runs a check of the pipeline's whose ColorError (an unknown display or view, named with the
+// valid ones) is the caller's bad argument.
+template <typename Check>
+void colour_argument(Check&& check) {
+  try {
+    check();
+  } catch (const ocio::ColorError& e) {
+    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, e.what());
+  }
+}
+
+// The views of `display`, one of the config's.
+const std::vector<std::string>& views_of(const Colour& colour, const char* display) {
+  require(display, "display");
+  colour_argument([&] { colour.display.pipeline().views(display); });
+  const auto it = std::find(colour.displays.begin(), colour.displays.end(), display);
+  return colour.views[static_cast<std::size_t>(it - colour.displays.begin())];
+}
+
+// AbiError(INVALID_ARGUMENT) unless `index` < `count`; `what` names the list.
+void require_index(std::size_t index, std::size_t count, const std::string& what) {
+  if (index >= count)
+    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, what + " index " + std::to_string(index) +
+                                                       " is outside [0, " + std::to_string(count) +
+                                                       ")");
+}
+
+// A material the thumbnails can show: in the database's colour space, of a model it holds (as
+// the navigator's queries require).
+void check_thumbnail_material(const Database& database, const Material& m) {
+  try {
+    require_render_colorspace(m);
+  } catch (const MaterialError& e) {
+    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, std::string("material: ") + e.what());
+  }
+  if (!database.embedding(m.model))
+    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, database.dir().string() + ": holds no model '" +
+                                                       std::string(model_info(m.model).name) + "'");
+}
+
 }  // namespace
 
 extern "C" {
@@ -93,7 +176,7 @@ const char* brdfnav_navigator_geterror(void) {
 brdfnav_status brdfnav_navigator_open(const char* database_dir, brdfnav_navigator** out) {
   return create_into(out, [&] {
     require(database_dir, "database_dir");
-    return translated([&] { return new brdfnav_navigator{Navigator::open(database_dir)}; });
+    return translated([&] { return new brdfnav_navigator(Navigator::open(database_dir)); });
   });
 }
 
@@ -167,6 +250,93 @@ brdfnav_status brdfnav_neighbors_get(const brdfnav_neighbors* list, size_t index
 
 void brdfnav_neighbors_free(brdfnav_neighbors* list) {
   delete list;
+}
+
+brdfnav_status brdfnav_navigator_displays(const brdfnav_navigator* navigator, size_t* count) {
+  return guarded([&] {
+    const Colour& colour = colour_of(navigator);
+    require(count, "count");
+    *count = colour.displays.size();
+  });
+}
+
+brdfnav_status brdfnav_navigator_display(const brdfnav_navigator* navigator, size_t index,
+                                         const char** name) {
+  return guarded([&] {
+    const Colour& colour = colour_of(navigator);
+    require_index(index, colour.displays.size(), "display");
+    require(name, "name");
+    *name = colour.displays[index].c_str();
+  });
+}
+
+brdfnav_status brdfnav_navigator_views(const brdfnav_navigator* navigator, const char* display,
+                                       size_t* count) {
+  return guarded([&] {
+    const std::vector<std::string>& views = views_of(colour_of(navigator), display);
+    require(count, "count");
+    *count = views.size();
+  });
+}
+
+brdfnav_status brdfnav_navigator_view(const brdfnav_navigator* navigator, const char* display,
+                                      size_t index, const char** name) {
+  return guarded([&] {
+    const std::vector<std::string>& views = views_of(colour_of(navigator), display);
+    require_index(index, views.size(), "view");
+    require(name, "name");
+    *name = views[index].c_str();
+  });
+}
+
+brdfnav_status brdfnav_navigator_thumbnail_size(const brdfnav_navigator* navigator, int* width,
+                                                int* height) {
+  return guarded([&] {
+    require(navigator, "navigator");
+    require(width, "width");
+    require(height, "height");
+    // What Thumbnails(database, 0) renders at, without loading the OCIO config.
+    *width = *height = navigator->navigator.database().manifest().resolution;
+  });
+}
+
+brdfnav_status brdfnav_navigator_thumbnail(const brdfnav_navigator* navigator,
+                                           const brdfnav_material* material, const char* display,
+                                           const char* view, int* width, int* height,
+                                           unsigned char* rgba, size_t capacity) {
+  return guarded([&] {
+    require(navigator, "navigator");
+    require(material, "material");
+    require(display, "display");
+    require(view, "view");
+    require(width, "width");
+    require(height, "height");
+    require(rgba, "rgba");
+    const Material m = material_from_struct(*material);
+    check_thumbnail_material(navigator->navigator.database(), m);
+    const Colour& colour = colour_of(navigator);
+    colour_argument([&] { colour.display.pipeline().validate(display, view); });
+    const int size = colour.display.resolution();
+    const std::size_t needed = std::size_t(size) * std::size_t(size) * 4;
+    if (capacity < needed)
+      throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT,
+                     "capacity: " + std::to_string(capacity) + " bytes, but the thumbnail needs " +
+                         std::to_string(size) + " x " + std::to_string(size) +
+                         " x 4 = " + std::to_string(needed));
+    const ocio::Thumbnail t = translated([&] {
+      try {
+        return colour.display.render(m, display, view);
+      } catch (const ocio::ColorError& e) {  // the config's processor, not the arguments
+        throw AbiError(BRDFNAV_ERROR_IO, e.what());
+      }
+    });
+    if (t.rgba.size() != needed)
+      throw std::logic_error("a thumbnail of " + std::to_string(t.rgba.size()) + " bytes, not " +
+                             std::to_string(needed));
+    std::memcpy(rgba, t.rgba.data(), needed);
+    *width = t.width;
+    *height = t.height;
+  });
 }
 
 }  // extern "C"

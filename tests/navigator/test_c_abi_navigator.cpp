@@ -1,15 +1,20 @@
 // The navigator through the C ABI of a dlopen()ed libbrdfnav_navigator.so (plugin_api.h), against
-// the C++ navigator linked into this test: the same neighbours, the ABI's statuses and messages;
-// its neighbours' materials make closures of libbrdfnav.so.
+// the C++ navigator linked into this test: the same neighbours and display thumbnails, the ABI's
+// statuses and messages; its neighbours' materials make closures of libbrdfnav.so.
 #include "navigator/navigator_fixture.h"
 #include "plugin/plugin_api.h"
 
+#include <brdfnav/navigator/display_thumbnails.h>
 #include <brdfnav/navigator/navigator.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace brdfnav {
 namespace {
@@ -179,6 +184,187 @@ TEST_F(CAbiNavigator, ReportsBadQueriesWithStatusAndMessage) {
   EXPECT_EQ(count, 7u);
   c.neighbors_free(nullptr);
   c.navigator_close(nullptr);
+}
+
+// The library reports the header's version, and the loader's check refuses it for a host built
+// against another: version 1, before brdfnav_neighbor gained words, change and opposite.
+TEST(CAbiNavigatorVersion, IsTheHeadersAndALoaderOfAnotherRefusesIt) {
+  static_assert(BRDFNAV_NAVIGATOR_ABI_VERSION == 2);
+  EXPECT_NO_THROW(test::open_library(BRDFNAV_NAVIGATOR_PATH, "brdfnav_navigator_abi_version",
+                                     BRDFNAV_NAVIGATOR_ABI_VERSION));
+  try {
+    test::open_library(BRDFNAV_NAVIGATOR_PATH, "brdfnav_navigator_abi_version", 1);
+    ADD_FAILURE() << "a library of version 2 was accepted for version 1";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("ABI version 2, expected 1"));
+  }
+}
+
+// $OCIO unset for the life of a test, restored after: the display thumbnails' tests name the
+// built-in config's sRGB display and Standard view.
+class BuiltinOcioConfig {
+ public:
+  BuiltinOcioConfig() {
+    if (const char* old = std::getenv("OCIO")) old_ = old;
+    ::unsetenv("OCIO");
+  }
+  ~BuiltinOcioConfig() {
+    if (old_) ::setenv("OCIO", old_->c_str(), 1);
+  }
+
+ private:
+  std::optional<std::string> old_;
+};
+
+// The displays and views the ABI lists are the C++ pipeline's, in its order.
+TEST_F(CAbiNavigator, ListsTheOcioDisplaysAndViews) {
+  const BuiltinOcioConfig builtin;
+  const ocio::ColorPipeline reference;
+  size_t count = 0;
+  ASSERT_EQ(c.navigator_displays(nav.navigator, &count), BRDFNAV_OK) << c.navigator_geterror();
+  const std::vector<std::string> displays = reference.displays();
+  ASSERT_EQ(count, displays.size());
+  for (size_t i = 0; i < count; ++i) {
+    const char* name = nullptr;
+    ASSERT_EQ(c.navigator_display(nav.navigator, i, &name), BRDFNAV_OK) << c.navigator_geterror();
+    EXPECT_EQ(name, displays[i]);
+    const std::vector<std::string> views = reference.views(displays[i]);
+    size_t view_count = 0;
+    ASSERT_EQ(c.navigator_views(nav.navigator, name, &view_count), BRDFNAV_OK);
+    ASSERT_EQ(view_count, views.size());
+    for (size_t j = 0; j < view_count; ++j) {
+      const char* view = nullptr;
+      ASSERT_EQ(c.navigator_view(nav.navigator, name, j, &view), BRDFNAV_OK);
+      EXPECT_EQ(view, views[j]);
+    }
+  }
+  // The first of each list is the config's default.
+  const char* first = nullptr;
+  ASSERT_EQ(c.navigator_display(nav.navigator, 0, &first), BRDFNAV_OK);
+  EXPECT_EQ(first, reference.default_display());
+  ASSERT_EQ(c.navigator_view(nav.navigator, first, 0, &first), BRDFNAV_OK);
+  EXPECT_EQ(first, reference.default_view(reference.default_display()));
+
+  const char* untouched = "untouched";
+  EXPECT_EQ(c.navigator_display(nav.navigator, count, &untouched), BRDFNAV_ERROR_INVALID_ARGUMENT);
+  EXPECT_THAT(c.navigator_geterror(), HasSubstr("display index " + std::to_string(count)));
+  EXPECT_EQ(c.navigator_views(nav.navigator, "Nonesuch", &count), BRDFNAV_ERROR_INVALID_ARGUMENT);
+  EXPECT_THAT(c.navigator_geterror(), HasSubstr("display 'Nonesuch'"));
+  EXPECT_THAT(c.navigator_geterror(), HasSubstr("'sRGB'"));
+  EXPECT_EQ(c.navigator_view(nav.navigator, "sRGB", 99, &untouched),
+            BRDFNAV_ERROR_INVALID_ARGUMENT);
+  EXPECT_THAT(c.navigator_geterror(), HasSubstr("view index 99"));
+  EXPECT_STREQ(untouched, "untouched");
+  EXPECT_EQ(c.navigator_displays(nullptr, &count), BRDFNAV_ERROR_INVALID_ARGUMENT);
+  EXPECT_THAT(c.navigator_geterror(), HasSubstr("navigator"));
+  EXPECT_EQ(c.navigator_views(nav.navigator, nullptr, &count), BRDFNAV_ERROR_INVALID_ARGUMENT);
+  EXPECT_THAT(c.navigator_geterror(), HasSubstr("display"));
+}
+
+// The first gallery material of the database, as the C ABI hands it out, and as C++ sees it.
+struct GalleryMaterial {
+  explicit GalleryMaterial(const brdfnav_navigator* navigator) {
+    EXPECT_EQ(navigator_api().navigator_gallery(navigator, 3, &list.list), BRDFNAV_OK);
+    brdfnav_neighbor n;
+    EXPECT_EQ(navigator_api().neighbors_get(list.list, 0, &n), BRDFNAV_OK);
+    c = n.material;
+  }
+  ListHandle list;
+  brdfnav_material c{};
+};
+
+// A database material's thumbnail in sRGB / Standard is the C++ display thumbnail byte for byte,
+// which is the pipeline's encoding of the linear thumbnail at the database's resolution.
+TEST_F(CAbiNavigator, ThumbnailsMatchTheCppDisplayThumbnails) {
+  const BuiltinOcioConfig builtin;
+  const GalleryMaterial material(nav.navigator);
+  const Material m = reference().gallery(3)[0].material;
+  const int resolution = reference().database().manifest().resolution;
+  int width = 0, height = 0;
+  ASSERT_EQ(c.navigator_thumbnail_size(nav.navigator, &width, &height), BRDFNAV_OK);
+  EXPECT_EQ(width, resolution);
+  EXPECT_EQ(height, resolution);
+
+  const std::size_t bytes = std::size_t(resolution) * resolution * 4;
+  std::vector<unsigned char> rgba(bytes + 16, 0xab);
+  width = height = -1;
+  ASSERT_EQ(c.navigator_thumbnail(nav.navigator, &material.c, "sRGB", "Standard", &width, &height,
+                                  rgba.data(), rgba.size()),
+            BRDFNAV_OK)
+      << c.navigator_geterror();
+  EXPECT_EQ(width, resolution);
+  EXPECT_EQ(height, resolution);
+  for (std::size_t i = bytes; i < rgba.size(); ++i) EXPECT_EQ(rgba[i], 0xab) << i;
+  rgba.resize(bytes);
+
+  const Thumbnails thumbnails(reference().database(), 0);
+  const DisplayThumbnails display(thumbnails);
+  const ocio::Thumbnail expected = display.render(m, "sRGB", "Standard");
+  ASSERT_EQ(expected.width, resolution);
+  EXPECT_EQ(rgba, expected.rgba);
+  const Image linear = thumbnails.render(m);
+  EXPECT_EQ(rgba, display.pipeline().apply(linear.rgba.data(), resolution, resolution, "sRGB",
+                                           "Standard"));
+  // Covered pixels are opaque, the corners (outside the sphere) transparent.
+  EXPECT_EQ(rgba[((resolution / 2) * resolution + resolution / 2) * 4 + 3], 255);
+  EXPECT_EQ(rgba[3], 0);
+
+  // Another view of the same material differs: the view is applied, not ignored.
+  std::vector<unsigned char> aces(bytes);
+  ASSERT_EQ(c.navigator_thumbnail(nav.navigator, &material.c, "sRGB", "ACES 1.0 SDR-video", &width,
+                                  &height, aces.data(), aces.size()),
+            BRDFNAV_OK)
+      << c.navigator_geterror();
+  EXPECT_EQ(aces, display.render(m, "sRGB", "ACES 1.0 SDR-video").rgba);
+  EXPECT_NE(aces, rgba);
+}
+
+// Bad displays, views, buffers and materials: the error status, a message naming them, and
+// nothing written.
+TEST_F(CAbiNavigator, ThumbnailsReportBadArgumentsWithoutWriting) {
+  const BuiltinOcioConfig builtin;
+  const GalleryMaterial material(nav.navigator);
+  const int resolution = reference().database().manifest().resolution;
+  const std::size_t bytes = std::size_t(resolution) * resolution * 4;
+  std::vector<unsigned char> rgba(bytes, 0xab);
+  int width = -1, height = -1;
+  const auto expect_refused = [&](brdfnav_status status, const std::vector<std::string>& named) {
+    EXPECT_EQ(status, BRDFNAV_ERROR_INVALID_ARGUMENT) << named.front();
+    for (const std::string& n : named) EXPECT_THAT(c.navigator_geterror(), HasSubstr(n));
+    EXPECT_EQ(width, -1);
+    EXPECT_EQ(height, -1);
+    EXPECT_EQ(rgba, std::vector<unsigned char>(bytes, 0xab));
+  };
+  expect_refused(c.navigator_thumbnail(nav.navigator, &material.c, "Nonesuch", "Standard", &width,
+                                       &height, rgba.data(), bytes),
+                 {"display 'Nonesuch'", "'sRGB'", "'Rec.1886'"});
+  expect_refused(c.navigator_thumbnail(nav.navigator, &material.c, "sRGB", "Nonesuch", &width,
+                                       &height, rgba.data(), bytes),
+                 {"display 'sRGB' has no view 'Nonesuch'", "'Standard'", "'ACES 1.0 SDR-video'"});
+  expect_refused(c.navigator_thumbnail(nav.navigator, &material.c, "sRGB", "Standard", &width,
+                                       &height, rgba.data(), bytes - 1),
+                 {"capacity: " + std::to_string(bytes - 1), std::to_string(bytes)});
+  expect_refused(c.navigator_thumbnail(nav.navigator, &material.c, "sRGB", "Standard", &width,
+                                       &height, nullptr, bytes),
+                 {"rgba"});
+  expect_refused(c.navigator_thumbnail(nav.navigator, nullptr, "sRGB", "Standard", &width, &height,
+                                       rgba.data(), bytes),
+                 {"material"});
+  expect_refused(c.navigator_thumbnail(nav.navigator, &material.c, nullptr, "Standard", &width,
+                                       &height, rgba.data(), bytes),
+                 {"display"});
+  brdfnav_material acescg = material.c;
+  acescg.colorspace = "acescg";
+  expect_refused(c.navigator_thumbnail(nav.navigator, &acescg, "sRGB", "Standard", &width, &height,
+                                       rgba.data(), bytes),
+                 {"colorspace 'acescg'"});
+  expect_refused(c.navigator_thumbnail(nullptr, &material.c, "sRGB", "Standard", &width, &height,
+                                       rgba.data(), bytes),
+                 {"navigator"});
+  EXPECT_EQ(c.navigator_thumbnail_size(nav.navigator, &width, nullptr),
+            BRDFNAV_ERROR_INVALID_ARGUMENT);
+  EXPECT_THAT(c.navigator_geterror(), HasSubstr("height"));
+  EXPECT_EQ(width, -1);
 }
 
 }  // namespace

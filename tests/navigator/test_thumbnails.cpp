@@ -1,7 +1,9 @@
 // Thumbnails of any material from a test-profile database: exact at grid nodes, close to the
-// exactly rendered image between them, resampled to any size, thread-safe, and through OCIO.
+// exactly rendered image between them, resampled to any size, thread-safe, and through OCIO (the
+// navigator's display thumbnails too).
 #include "navigator/navigator_fixture.h"
 
+#include <brdfnav/navigator/display_thumbnails.h>
 #include <brdfnav/navigator/navigator.h>
 #include <brdfnav/navigator/thumbnails.h>
 #include <brdfnav/ocio/color_pipeline.h>
@@ -159,6 +161,55 @@ TEST(Thumbnails, ThroughOcioMatchTheSrgbEncoding) {
       ASSERT_NEAR(bytes[p + c], 255 * srgb_encode(linear), 1.0) << p << " " << c;
     }
   }
+}
+
+// The navigator's display thumbnails are the pipeline's encoding of its linear thumbnails, byte for
+// byte, on every display and view of the config.
+TEST(DisplayThumbnails, AreThePipelinesEncodingOfTheLinearThumbnail) {
+  const Thumbnails thumbnails(database(), 48);
+  const DisplayThumbnails display(thumbnails);
+  EXPECT_EQ(display.resolution(), 48);
+  EXPECT_EQ(&display.linear(), &thumbnails);
+  const ocio::ColorPipeline reference;
+  const Material m = ward(0.02, 0.05);
+  const Image linear = thumbnails.render(m);
+  int pairs = 0;
+  for (const std::string& d : reference.displays())
+    for (const std::string& v : reference.views(d)) {
+      SCOPED_TRACE(d + " / " + v);
+      const ocio::Thumbnail t = display.render(m, d, v);
+      EXPECT_EQ(t.width, 48);
+      EXPECT_EQ(t.height, 48);
+      EXPECT_EQ(t.rgba, reference.apply(linear.rgba.data(), linear.width, linear.height, d, v));
+      ++pairs;
+    }
+  EXPECT_GE(pairs, 1);
+  // Each (display, view) processor is built once and reused.
+  const std::string d = display.pipeline().default_display();
+  const std::string v = display.pipeline().default_view(d);
+  EXPECT_EQ(display.pipeline().processor(d, v), display.pipeline().processor(d, v));
+}
+
+// An unknown display or view is named, with the valid ones, before anything is rendered.
+TEST(DisplayThumbnails, NameAnUnknownDisplayOrViewBeforeRendering) {
+  const Thumbnails thumbnails(database(), 16, SIZE_MAX);
+  const DisplayThumbnails display(thumbnails);
+  const std::string d = display.pipeline().default_display();
+  const std::string v = display.pipeline().default_view(d);
+  const auto message = [&](const std::string& display_name, const std::string& view_name) {
+    try {
+      display.render(ward(0.05, 0.05), display_name, view_name);
+    } catch (const ocio::ColorError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  const std::string no_display = message("Nonesuch", v), no_view = message(d, "Nonesuch");
+  EXPECT_NE(no_display.find("display 'Nonesuch'"), std::string::npos) << no_display;
+  EXPECT_NE(no_display.find("'" + d + "'"), std::string::npos) << no_display;
+  EXPECT_NE(no_view.find("view 'Nonesuch'"), std::string::npos) << no_view;
+  EXPECT_NE(no_view.find("'" + v + "'"), std::string::npos) << no_view;
+  EXPECT_EQ(thumbnails.cached_bytes(), 0u);
 }
 
 }  // namespace

@@ -42,7 +42,13 @@ namespace brdfnav::test {
   X(navigator_gallery) \
   X(neighbors_count) \
   X(neighbors_get) \
-  X(neighbors_free)
+  X(neighbors_free) \
+  X(navigator_displays) \
+  X(navigator_display) \
+  X(navigator_views) \
+  X(navigator_view) \
+  X(navigator_thumbnail_size) \
+  X(navigator_thumbnail)
 // clang-format on
 
 #define BRDFNAV_DECLARE(name) decltype(&::brdfnav_##name) name = nullptr;

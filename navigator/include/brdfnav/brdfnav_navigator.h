@@ -1,7 +1,8 @@
 /* brdfnav navigator C ABI: opens a database made by `brdfnav precompute` and offers a
- * material's variations at equal visual distance (docs/NAVIGATION.md), for lookdev tools. It is
+ * material's variations at equal visual distance (docs/NAVIGATION.md), and any material's
+ * preview thumbnail as an OpenColorIO display shows it, for lookdev tools. It is
  * libbrdfnav_navigator.so, apart from the closures of libbrdfnav.so (brdfnav.h) that a renderer
- * loads: it reads images through OpenImageIO, which a renderer need not take into its process.
+ * loads: it reads images and manages colour, which a renderer need not take into its process.
  *
  * Conventions are brdfnav.h's, with these of its own:
  * - Hosts that load the library at run time call brdfnav_navigator_abi_version() first and use
@@ -18,9 +19,12 @@
 
 #include <stddef.h>
 
-/* 1: the navigator of brdfnav.h's ABI 2, in a library of its own, with its own version and
- * error message. */
-#define BRDFNAV_NAVIGATOR_ABI_VERSION 1
+/* 1: the navigator, moved out of libbrdfnav.so (brdfnav.h's ABI 3) into a library of its own,
+ *    with its own version and error message.
+ * 2: brdfnav_neighbor gained words, change and opposite (a change of its layout that version 1
+ *    did not mark); display thumbnails through OpenColorIO (brdfnav_navigator_displays(),
+ *    _display(), _views(), _view(), _thumbnail_size(), _thumbnail()). */
+#define BRDFNAV_NAVIGATOR_ABI_VERSION 2
 
 #ifdef __cplusplus
 extern "C" {
@@ -100,6 +104,48 @@ BRDFNAV_API brdfnav_status brdfnav_neighbors_get(const brdfnav_neighbors* list, 
                                                  brdfnav_neighbor* out);
 /* Accepts NULL. */
 BRDFNAV_API void brdfnav_neighbors_free(brdfnav_neighbors* list);
+
+/* Display thumbnails: the navigator's thumbnail of a material (the database's images around it,
+ * blended as the embedding interpolates: navigator/thumbnails.h) is linear lin_rec709 RGBA; these
+ * functions turn it into what an OpenColorIO (display, view) shows. The OCIO config is $OCIO's
+ * when set, otherwise the one built into the library (docs/COLOR.md: displays "sRGB" and
+ * "Rec.1886", each with views "Standard" and "ACES 1.0 SDR-video"). It is loaded by the first of
+ * these calls on a navigator and kept until brdfnav_navigator_close(), each (display, view)
+ * processor built once and reused; a config that cannot be loaded is BRDFNAV_ERROR_IO naming
+ * its file (each call tries again), and a config that does no colour management (OCIO's raw
+ * config) is reported once as a warning on stderr. */
+
+/* The config's displays, in its order (the first is its default display). Names live until
+ * brdfnav_navigator_close(). */
+BRDFNAV_API brdfnav_status brdfnav_navigator_displays(const brdfnav_navigator* navigator,
+                                                      size_t* count);
+BRDFNAV_API brdfnav_status brdfnav_navigator_display(const brdfnav_navigator* navigator,
+                                                     size_t index, const char** name);
+/* A display's views, in the config's order (the first is the display's default view). An
+ * unknown display is BRDFNAV_ERROR_INVALID_ARGUMENT naming it and listing the displays. */
+BRDFNAV_API brdfnav_status brdfnav_navigator_views(const brdfnav_navigator* navigator,
+                                                   const char* display, size_t* count);
+BRDFNAV_API brdfnav_status brdfnav_navigator_view(const brdfnav_navigator* navigator,
+                                                  const char* display, size_t index,
+                                                  const char** name);
+
+/* The size of every thumbnail of this navigator: the database's resolution (square). */
+BRDFNAV_API brdfnav_status brdfnav_navigator_thumbnail_size(const brdfnav_navigator* navigator,
+                                                            int* width, int* height);
+/* The thumbnail of `material` (a lin_rec709 material of a model the database holds, as
+ * brdfnav_navigator_neighbors() takes) on `display` through `view`: *width x *height pixels of 4
+ * bytes, R G B A, row-major, row 0 at the top, written to `rgba`. RGB is display-encoded, the
+ * pixels the sphere does not cover composited over mid grey (linear 0.18) first; A is 255 where
+ * the sphere covers the pixel, 0 elsewhere. `capacity` is the size of `rgba` in bytes, at least
+ * width * height * 4 (brdfnav_navigator_thumbnail_size()). An unknown display or view, a
+ * smaller capacity, and a material the navigator does not take are
+ * BRDFNAV_ERROR_INVALID_ARGUMENT (the message names the display or view and lists the valid
+ * ones), with nothing written. */
+BRDFNAV_API brdfnav_status brdfnav_navigator_thumbnail(const brdfnav_navigator* navigator,
+                                                       const brdfnav_material* material,
+                                                       const char* display, const char* view,
+                                                       int* width, int* height, unsigned char* rgba,
+                                                       size_t capacity);
 
 #ifdef __cplusplus
 }

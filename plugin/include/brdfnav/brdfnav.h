@@ -1,5 +1,5 @@
 /* brdfnav C ABI: the analytic BRDF models of brdfnav (Blinn-Phong, Ward, Cook-Torrance,
- * Lafortune, He et al.) as closures that a renderer or tool loads from libbrdfnav.so, which
+ * Lafortune, He et al., GGX) as closures that a renderer or tool loads from libbrdfnav.so, which
  * needs nothing but the C and C++ runtimes and yaml-cpp. The navigator, which offers a
  * material's variations at equal visual distance, is a library of its own
  * (brdfnav/brdfnav_navigator.h, libbrdfnav_navigator.so).

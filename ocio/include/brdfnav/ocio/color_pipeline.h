@@ -2,6 +2,7 @@
 // Colour management for thumbnails: scene-linear float RGBA in, display-encoded RGBA out, through
 // OpenColorIO. The config comes from $OCIO when set, otherwise from a config built in code from
 // OCIO 2.1's built-in transforms (docs/COLOR.md lists its colour spaces, displays and views).
+// brdfnav::ocio: OpenColorIO only (no OpenImageIO), so that the navigator's library can link it.
 
 #include <OpenColorIO/OpenColorABI.h>  // OCIO_NAMESPACE, for the processor handle below
 
@@ -39,6 +40,14 @@ inline constexpr const char* kDisplaySRGB = "sRGB";
 inline constexpr const char* kDisplayRec1886 = "Rec.1886";
 inline constexpr const char* kViewStandard = "Standard";
 inline constexpr const char* kViewACES = "ACES 1.0 SDR-video";
+
+// 8-bit display-encoded RGBA, row-major, row 0 at the top: what ColorPipeline::apply returns,
+// with its size.
+struct Thumbnail {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;
+};
 
 struct PipelineOptions {
   // OCIO config file; empty means $OCIO when set (and not empty), else the built-in config.

@@ -1,7 +1,10 @@
 #pragma once
 // Labelled contact sheets in the manner of Photoshop's Variations: the current material in the
 // centre, highlighted (and larger once there are more than 8 variations), its variations on a
-// ring around it, each tile with label lines under it. Written as PNG with OpenImageIO.
+// ring around it, each tile with label lines under it. Written as PNG with OpenImageIO
+// (brdfnav::contact_sheet; the colour pipeline alone is brdfnav::ocio).
+
+#include <brdfnav/ocio/color_pipeline.h>
 
 #include <cstdint>
 #include <stdexcept>
@@ -16,15 +19,9 @@ class ContactSheetError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// 8-bit display-encoded RGBA, row-major, row 0 at the top (what ColorPipeline::apply returns).
-// Only RGB is drawn: the pipeline has already composited uncovered pixels over its background.
-struct Thumbnail {
-  int width = 0;
-  int height = 0;
-  std::vector<std::uint8_t> rgba;
-};
-
 struct SheetTile {
+  // A display-encoded thumbnail (color_pipeline.h). Only RGB is drawn: the pipeline has already
+  // composited uncovered pixels over its background.
   Thumbnail image;
   std::vector<std::string> label;  // lines under the image, e.g. {"alpha_x+", "d=0.050"}
 };
