@@ -1,5 +1,6 @@
 #include <brdfnav/navigator/navigator.h>
 
+#include "closest.h"
 #include "colour.h"
 #include "kmeans.h"
 #include "ring.h"
@@ -272,8 +273,9 @@ void refine_models_offer(std::vector<Neighbor>& offers, const Walked* walked, do
 
 // Paper, section 4, with the sphere around the current material: from the current material's
 // best fit A' in every other model, that model's neighbours at distance eps from the current
-// material along each of its lobe paths from A'. A model whose best fit is already farther than
-// eps offers that fit, flagged beyond_radius: the closest it comes. Offers within delta of their
+// material along each of its lobe paths from A'. Where the BRDF-space fit is farther than eps,
+// A' is the closest material of that model in the metric (nav::closest_in_model); a model whose
+// closest is still farther than eps offers it, flagged beyond_radius. Offers within delta of their
 // own best fit back in the current model are dropped (the current model shows them already),
 // then one is kept per k-means cluster, and of two kept offers within delta of each other only
 // the first (they would look the same).
@@ -291,9 +293,16 @@ std::vector<Neighbor> Navigator::models_tab(const Material& current, double radi
         !database_.conversion(g.model, current.model))
       continue;
     const ModelEmbedding& embedding = embedding_of(g.model);
-    const Material fit = convert(current, g.model);
+    Material fit = convert(current, g.model);
+    double residual = embedding_distance(embedding.embed(fit), from);
+    if (residual >= radius) {
+      // The BRDF-space fit is beyond eps: the closest the model comes in the metric instead,
+      // from which the model is walked like from a fit if it comes within eps.
+      const nav::Closest closest = nav::closest_in_model(embedding, from, fit);
+      fit = closest.material;
+      residual = closest.distance;
+    }
     Eigen::VectorXf fit_point = embedding.embed(fit);
-    const double residual = embedding_distance(fit_point, from);
     if (residual >= radius) {
       Neighbor n{
           .tab = Tab::models, .label = model_name(g.model), .material = fit, .distance = residual};

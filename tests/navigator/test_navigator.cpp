@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include "closest.h"
 #include "colour.h"
 #include "ring.h"
 
@@ -294,7 +295,7 @@ TEST(Navigator, TheStartAndTheReadmesMaterialHaveRoomInEveryDirection) {
 
 TEST(Navigator, ModelsTabShowsWhatTheCurrentModelCannot) {
   const Navigator& nav = navigator();
-  std::size_t shown = 0;
+  std::size_t shown = 0, beyond = 0;
   for (const Case& c : cases(2, 4)) {
     SCOPED_TRACE(describe(c));
     const std::vector<Neighbor> out = nav.neighbors(c.material, c.radius, Tab::models, 5);
@@ -307,11 +308,13 @@ TEST(Navigator, ModelsTabShowsWhatTheCurrentModelCannot) {
       EXPECT_EQ(n.label, model_info(n.material.model).name);
       EXPECT_EQ(n.words, "as " + std::string(model_info(n.material.model).title));
       EXPECT_NEAR(nav.distance(c.material, n.material), n.distance, 1e-6 * c.radius);
-      // At eps from the current material; a model that cannot come that close offers its best
-      // fit, flagged, farther than eps.
+      // At eps from the current material; a model that cannot come that close offers the
+      // closest it comes, flagged, farther than eps and no farther than its best fit.
       if (n.beyond_radius) {
         EXPECT_GE(n.distance, c.radius) << n.label;
-        EXPECT_TRUE(same(n.material, nav.convert(c.material, n.material.model))) << n.label;
+        const Material fit = nav.convert(c.material, n.material.model);
+        EXPECT_LE(n.distance, nav.distance(c.material, fit) + 1e-9) << n.label;
+        ++beyond;
       } else if (!n.at_boundary) {
         EXPECT_NEAR(n.distance, c.radius, 1e-3 * c.radius) << n.label;
         // Its best fit in the current model is at least delta = 0.3 eps away.
@@ -324,6 +327,31 @@ TEST(Navigator, ModelsTabShowsWhatTheCurrentModelCannot) {
     }
   }
   EXPECT_GT(shown, 0u) << "the filter dropped every neighbour of every case";
+  EXPECT_GT(beyond, 0u) << "no case had a model beyond the radius";
+}
+
+// The search for a model's closest material: from a far start in the centre's own model it
+// comes back to the centre (the embedding's distance vanishes there), and it is never farther
+// than where it started.
+TEST(ClosestInModel, FindsTheCentreFromAFarStart) {
+  const Navigator& nav = navigator();
+  const ModelEmbedding& ward = *nav.database().embedding(ModelId::ward);
+  Material centre = default_material(ModelId::ward);
+  centre.params = {0.1, 0.05};
+  centre.rho_s = Rgb::Constant(0.5);
+  Material start = centre;
+  start.params = {0.3, 0.2};
+  start.rho_s = Rgb::Constant(0.2);
+  const Eigen::VectorXf point = ward.embed(centre);
+  const double far = embedding_distance(ward.embed(start), point);
+  const nav::Closest c = nav::closest_in_model(ward, point, start);
+  EXPECT_LT(c.distance, 0.05 * far) << far;
+  EXPECT_NEAR(std::log(c.material.params[0] / 0.1), 0, 0.1);
+  EXPECT_NEAR(std::log(c.material.params[1] / 0.05), 0, 0.1);
+  EXPECT_NEAR(std::log(c.material.rho_s[0] / 0.5), 0, 0.1);
+  EXPECT_LE(c.evaluations, 200);
+  // A start at the centre stays there.
+  EXPECT_EQ(nav::closest_in_model(ward, point, centre).distance, 0.0);
 }
 
 TEST(Navigator, ConversionsInterpolateTheTables) {

@@ -67,8 +67,9 @@ struct Neighbor {
   // The colour left the valid range (rho_d in [0, 1], rho_s in [0, 10]) before distance eps
   // (colour tabs): the neighbour is the farthest valid colour in that direction.
   bool clamped = false;
-  // Models tab: the model cannot come within eps of the current material (its best fit is
-  // farther); the offer is that fit, at `distance`.
+  // Models tab: the model cannot come within eps of the current material (the closest it comes
+  // in the metric, searched from its best fit, is farther); the offer is that closest material,
+  // at `distance`.
   bool beyond_radius = false;
   // What the offer looks like in an artist's words ("sharper", "lighter", "towards red",
   // "as Ward (anisotropic)"), and the parameter change for a tooltip ("alpha_x 0.1 -> 0.0707").
