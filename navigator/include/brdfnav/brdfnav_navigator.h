@@ -53,7 +53,7 @@ typedef enum brdfnav_tab {
 #define BRDFNAV_NEIGHBOR_AT_BOUNDARY 1u /* a parameter reached its range's end before radius */
 #define BRDFNAV_NEIGHBOR_CLAMPED 2u     /* the colour reached its valid range's end before radius */
 #define BRDFNAV_NEIGHBOR_BEYOND_RADIUS \
-  4u /* models tab: the model's best fit is farther than radius */
+  4u /* models tab: the closest the model comes is farther than radius */
 
 /* A list holds a tab's offers in ring order: each pair of opposite directions as i and i + n/2
  * when every offer has its opposite, so that offer i drawn at angle 2 pi i / n faces its
