@@ -46,7 +46,7 @@ void check_files(const fs::path& dir, const Manifest& m) {
 // value would move every query and conversion silently.
 void check_node(const OIIO::ImageSpec& spec, const std::string& file, const ProfileGrid& g,
                 std::size_t node) {
-  const std::string header = attribute(spec, "brdfnav:material");
+  const std::string header = attribute(spec, db::kHeaderMaterial);
   Material rendered;
   try {
     rendered = parse_material_spec(header);
@@ -79,12 +79,12 @@ void check_image(const fs::path& path, const Manifest& m, const Image& diffuse,
     throw DatabaseError(file + ": image is " + std::to_string(spec.width) + "x" +
                         std::to_string(spec.height) + ", the manifest says " +
                         std::to_string(m.resolution));
-  if (attribute(spec, "brdfnav:env_sha1") != m.env_hash)
+  if (attribute(spec, db::kHeaderEnvSha1) != m.env_hash)
     throw DatabaseError(file + ": rendered under another environment map (pixel SHA-1 " +
-                        attribute(spec, "brdfnav:env_sha1") + ", the manifest says " + m.env_hash +
+                        attribute(spec, db::kHeaderEnvSha1) + ", the manifest says " + m.env_hash +
                         ")");
-  if (attribute(spec, "brdfnav:scene") != m.scene)
-    throw DatabaseError(file + ": rendered with scene '" + attribute(spec, "brdfnav:scene") +
+  if (attribute(spec, db::kHeaderScene) != m.scene)
+    throw DatabaseError(file + ": rendered with scene '" + attribute(spec, db::kHeaderScene) +
                         "', the manifest says '" + m.scene + "'");
   if (grid) check_node(spec, file, *grid, node);
   in.reset();
