@@ -5,6 +5,7 @@
 
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/io/material_yaml.h>
+#include <brdfnav/precompute/image_output.h>
 #include <brdfnav/precompute/render.h>
 
 #include <cstdio>

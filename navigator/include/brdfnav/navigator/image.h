@@ -47,13 +47,6 @@ double image_distance(const Image& a, const Image& b);
 // Metadata written as string attributes of the EXR header (e.g. {"brdfnav:material", spec}).
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 
-// Throws ImageError unless `path` names an OpenEXR file (ends in .exr, any case): a linear image
-// written under another name would be taken for a display-encoded one.
-void check_exr_name(const std::filesystem::path& path);
-// Writes linear float RGBA OpenEXR atomically: on any failure no file is left behind (and an
-// existing file is untouched). Throws ImageError naming the file, or from check_exr_name().
-void write_exr(const Image& image, const std::filesystem::path& path,
-               const ImageMetadata& metadata = {});
 // Reads an RGBA image in a floating-point format OpenImageIO reads (RGB gets alpha 1). Throws
 // ImageError naming the file when it cannot, when it is 8 or 16 bit (display-encoded), or naming
 // the pixel when one is negative or not finite.
