@@ -1,7 +1,8 @@
 /* brdfnav navigator C ABI: opens a database made by `brdfnav precompute` and offers a
  * material's variations at equal visual distance (docs/NAVIGATION.md), for lookdev tools. It is
  * libbrdfnav_navigator.so, apart from the closures of libbrdfnav.so (brdfnav.h) that a renderer
- * loads: it reads images through OpenImageIO, which a renderer need not take into its process.
+ * loads: it reads the database's images with OpenEXR, which a renderer need not take into its
+ * process.
  *
  * Conventions are brdfnav.h's, with these of its own:
  * - Hosts that load the library at run time call brdfnav_navigator_abi_version() first and use
