@@ -196,6 +196,13 @@ double lanczos3(double x) {
   return 3 * std::sin(px) * std::sin(px / 3) / (px * px);
 }
 
+// Blackman-Harris (4 terms) on |x| < 1.5.
+double blackman_harris(double x) {
+  if (std::abs(x) >= 1.5) return 0;
+  const double t = 2 * kPi * (x / 1.5 + 1) / 2;
+  return 0.35875 - 0.48829 * std::cos(t) + 0.14128 * std::cos(2 * t) - 0.01168 * std::cos(3 * t);
+}
+
 // The weights of one axis from `in` samples to `out`: for output sample i, the source indices
 // from first[i] on and their normalised weights.
 struct AxisWeights {
@@ -205,8 +212,9 @@ struct AxisWeights {
 
 AxisWeights axis_weights(int in, int out) {
   const double ratio = double(out) / in;
-  const double scale = std::max(1.0, 1 / ratio);  // widen the filter when shrinking
-  const double support = 3 * scale;
+  const bool enlarging = ratio > 1;
+  const double scale = enlarging ? 1 : 1 / ratio;  // widen the filter when shrinking
+  const double support = (enlarging ? 1.5 : 3) * scale;
   AxisWeights w;
   for (int i = 0; i < out; ++i) {
     const double centre = (i + 0.5) / ratio;  // in source pixel units, centres at k + 0.5
@@ -214,7 +222,8 @@ AxisWeights axis_weights(int in, int out) {
     std::vector<double> raw;
     double sum = 0;
     for (int k = lo; k <= hi; ++k) {
-      const double v = lanczos3((k + 0.5 - centre) / scale);
+      const double x = (k + 0.5 - centre) / scale;
+      const double v = enlarging ? blackman_harris(x) : lanczos3(x);
       raw.push_back(v);
       sum += v;
     }

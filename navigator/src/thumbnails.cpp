@@ -10,15 +10,12 @@ namespace brdfnav {
 
 namespace {
 
-// `image` resampled to `size` x `size` (Lanczos-3, resample()); the mask is made 0/1 again and
-// the radiance the filter's lobes overshot below 0 is clamped to 0.
+// `image` resampled to `size` x `size` (resample(): the filters OpenImageIO's resize chose, which
+// the thumbnails used before); the mask is made 0/1 again.
 Image resampled(const Image& image, int size) {
   if (image.width == size && image.height == size) return image;
   Image out = resample(image, size, size);
-  for (std::size_t i = 0; i < out.rgba.size(); i += 4) {
-    for (std::size_t c = i; c < i + 3; ++c) out.rgba[c] = std::max(out.rgba[c], 0.f);
-    out.rgba[i + 3] = out.rgba[i + 3] > 0.5f ? 1.f : 0.f;
-  }
+  for (std::size_t i = 3; i < out.rgba.size(); i += 4) out.rgba[i] = out.rgba[i] > 0.5f ? 1.f : 0.f;
   return out;
 }
 

@@ -69,10 +69,12 @@ Image read_image(const std::filesystem::path& path);
 // The string attributes of an OpenEXR file's header that start with "brdfnav:".
 ImageMetadata read_image_metadata(const std::filesystem::path& path);
 
-// `image` resampled to `width` x `height`, every channel alike: a separable Lanczos-3 filter whose
-// support widens by the ratio when shrinking (so every source pixel contributes), the weights of
-// each output pixel normalised (a constant stays constant), the edges clamped. Its lobes may
-// overshoot: values can leave the source's range near sharp edges.
+// `image` resampled to `width` x `height`, every channel alike, each axis by a separable filter:
+// when shrinking, Lanczos-3 with its support widened by the ratio (so every source pixel
+// contributes); when enlarging, Blackman-Harris over 3 source pixels. Those are the filters
+// OpenImageIO's ImageBufAlgo::resize() chooses by default, which the thumbnails used before. The
+// weights of each output pixel are normalised (a constant stays constant) and the edges clamped.
+// Lanczos' lobes may overshoot: values can leave the source's range near sharp edges.
 Image resample(const Image& image, int width, int height);
 
 }  // namespace brdfnav
