@@ -5,6 +5,7 @@
 
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/io/material_yaml.h>
+#include <brdfnav/precompute/image_output.h>
 #include <brdfnav/precompute/render.h>
 
 #include <cstdio>
@@ -68,8 +69,8 @@ void add_render_commands(CLI::App& app) {
   auto* distance = app.add_subcommand(
       "distance", "Print the cube-root RMS distance between two BRDF images (same mask)");
   auto a = std::make_shared<std::string>(), b = std::make_shared<std::string>();
-  distance->add_option("a", *a, "First image")->required();
-  distance->add_option("b", *b, "Second image")->required();
+  distance->add_option("a", *a, "First image (OpenEXR)")->required();
+  distance->add_option("b", *b, "Second image (OpenEXR)")->required();
   distance->callback(
       [=] { std::printf("%.9g\n", image_distance(read_image(*a), read_image(*b))); });
 }

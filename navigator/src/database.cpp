@@ -4,8 +4,6 @@
 #include <brdfnav/core/material.h>
 #include <brdfnav/navigator/image.h>
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <optional>
@@ -15,10 +13,6 @@ namespace brdfnav {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string attribute(const OIIO::ImageSpec& spec, const char* name) {
-  return spec.get_string_attribute(name);
-}
 
 // The manifest lists exactly the files the grids imply, and each exists with its checksum. Only
 // those: a listed name such as /dev/zero or ../../x would send the checksum outside the database
@@ -44,9 +38,9 @@ void check_files(const fs::path& dir, const Manifest& m) {
 // A grid image was rendered at its node: the parameters in its header's material are the
 // manifest's grid values. The manifest has no checksum of its own, so without this an edited grid
 // value would move every query and conversion silently.
-void check_node(const OIIO::ImageSpec& spec, const std::string& file, const ProfileGrid& g,
+void check_node(const ImageHeader& image, const std::string& file, const ProfileGrid& g,
                 std::size_t node) {
-  const std::string header = attribute(spec, "brdfnav:material");
+  const std::string header = image.attribute(db::kHeaderMaterial);
   Material rendered;
   try {
     rendered = parse_material_spec(header);
@@ -72,22 +66,24 @@ void check_node(const OIIO::ImageSpec& spec, const std::string& file, const Prof
 void check_image(const fs::path& path, const Manifest& m, const Image& diffuse,
                  const ProfileGrid* grid = nullptr, std::size_t node = 0) {
   const std::string file = path.string();
-  auto in = OIIO::ImageInput::open(file);
-  if (!in) throw DatabaseError(file + ": cannot read: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width != m.resolution || spec.height != m.resolution)
-    throw DatabaseError(file + ": image is " + std::to_string(spec.width) + "x" +
-                        std::to_string(spec.height) + ", the manifest says " +
+  ImageHeader header;
+  try {
+    header = read_image_header(path);
+  } catch (const ImageError& e) {
+    throw DatabaseError(e.what());
+  }
+  if (header.width != m.resolution || header.height != m.resolution)
+    throw DatabaseError(file + ": image is " + std::to_string(header.width) + "x" +
+                        std::to_string(header.height) + ", the manifest says " +
                         std::to_string(m.resolution));
-  if (attribute(spec, "brdfnav:env_sha1") != m.env_hash)
+  if (header.attribute(db::kHeaderEnvSha1) != m.env_hash)
     throw DatabaseError(file + ": rendered under another environment map (pixel SHA-1 " +
-                        attribute(spec, "brdfnav:env_sha1") + ", the manifest says " + m.env_hash +
+                        header.attribute(db::kHeaderEnvSha1) + ", the manifest says " + m.env_hash +
                         ")");
-  if (attribute(spec, "brdfnav:scene") != m.scene)
-    throw DatabaseError(file + ": rendered with scene '" + attribute(spec, "brdfnav:scene") +
+  if (header.attribute(db::kHeaderScene) != m.scene)
+    throw DatabaseError(file + ": rendered with scene '" + header.attribute(db::kHeaderScene) +
                         "', the manifest says '" + m.scene + "'");
-  if (grid) check_node(spec, file, *grid, node);
-  in.reset();
+  if (grid) check_node(header, file, *grid, node);
   if (diffuse.rgba.empty()) return;
   const Image image = read_image(path);
   for (std::size_t i = 3; i < image.rgba.size(); i += 4)

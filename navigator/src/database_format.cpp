@@ -1,8 +1,8 @@
 #include <brdfnav/navigator/database_format.h>
 
 #include <brdfnav/core/atomic_file.h>
+#include <brdfnav/core/sha1.h>
 
-#include <OpenImageIO/hash.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -330,7 +330,7 @@ ShardOrigin read_shard_origin(const std::filesystem::path& shard) {
 std::string file_sha1(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw DatabaseError(path.string() + ": missing or unreadable");
-  OIIO::SHA1 sha;
+  Sha1 sha;
   std::vector<char> buffer(1 << 20);
   while (in) {
     in.read(buffer.data(), std::streamsize(buffer.size()));

@@ -3,8 +3,6 @@
 #include <brdfnav/core/cube_root.h>
 #include <brdfnav/core/parallel_for.h>
 
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <algorithm>
 #include <vector>
 
@@ -12,16 +10,11 @@ namespace brdfnav {
 
 namespace {
 
-// `image` resampled to `size` x `size` (OIIO's default filter); the mask is made 0/1 again.
+// `image` resampled to `size` x `size` (resample(): the filters OpenImageIO's resize chose, which
+// the thumbnails used before); the mask is made 0/1 again.
 Image resampled(const Image& image, int size) {
   if (image.width == size && image.height == size) return image;
-  const OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
-  const OIIO::ImageBuf source(spec, const_cast<float*>(image.rgba.data()));
-  const OIIO::ImageBuf scaled =
-      OIIO::ImageBufAlgo::resize(source, "", 0, OIIO::ROI(0, size, 0, size, 0, 1, 0, 4));
-  Image out(size, size);
-  scaled.get_pixels(OIIO::ROI(0, size, 0, size, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT,
-                    out.rgba.data());
+  Image out = resample(image, size, size);
   for (std::size_t i = 3; i < out.rgba.size(); i += 4) out.rgba[i] = out.rgba[i] > 0.5f ? 1.f : 0.f;
   return out;
 }

@@ -1,7 +1,7 @@
 #include <brdfnav/precompute/env_map.h>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include <brdfnav/core/sha1.h>
+
 #include <OpenImageIO/imageio.h>
 
 #include <cstdint>
@@ -11,11 +11,13 @@ namespace brdfnav {
 
 namespace {
 
-std::string pixel_sha1(int width, int height, const std::vector<float>& rgb) {
-  const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::FLOAT);
-  // ImageBuf only wraps the buffer (no copy) and the hash does not write to it.
-  const OIIO::ImageBuf buf(spec, const_cast<float*>(rgb.data()));
-  return OIIO::ImageBufAlgo::computePixelHashSHA1(buf);
+// The SHA-1 of the float RGB texels' bytes, row 0 first: what OpenImageIO's
+// ImageBufAlgo::computePixelHashSHA1() gave for them, which older manifests record
+// (tests/precompute/test_sha1_oiio.cpp).
+std::string pixel_sha1(const std::vector<float>& rgb) {
+  Sha1 sha;
+  sha.append(rgb.data(), rgb.size() * sizeof(float));
+  return sha.digest();
 }
 
 void check_shape(const std::string& source, int width, int height) {
@@ -120,7 +122,7 @@ EnvMap::EnvMap(int width, int height, std::vector<float> rgb, std::string source
   for (float v : rgb_)
     if (!std::isfinite(v) || v < 0)
       throw EnvMapError(source_ + ": texels must be finite and non-negative");
-  hash_ = pixel_sha1(width_, height_, rgb_);
+  hash_ = pixel_sha1(rgb_);
 }
 
 Vec3 EnvMap::direction(double u, double v) {

@@ -5,6 +5,7 @@
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/core/parallel_for.h>
 #include <brdfnav/navigator/database_format.h>
+#include <brdfnav/precompute/image_output.h>
 #include <brdfnav/precompute/render.h>
 
 #include <chrono>

@@ -1,6 +1,7 @@
 #include <brdfnav/precompute/render.h>
 
 #include <brdfnav/core/parallel_for.h>
+#include <brdfnav/navigator/database_format.h>
 #include "geometry.h"
 #include "materialx_ggx.h"
 #include "quadrature.h"
@@ -420,13 +421,13 @@ ImageMetadata render_metadata(const Renderer& renderer, const Material* material
                 "max_nodes=%d",
                 q.texels_per_width, q.hot_texels_per_width, q.max_node, q.reach, q.max_split,
                 q.max_nodes);
-  ImageMetadata m{{"brdfnav:env", renderer.env().source()},
-                  {"brdfnav:env_sha1", renderer.env().pixel_hash()},
-                  {"brdfnav:scene", renderer.scene().description()},
-                  {"brdfnav:resolution", std::to_string(renderer.resolution())},
-                  {"brdfnav:renderer_revision", std::to_string(kRendererRevision)},
-                  {"brdfnav:quality", quality}};
-  if (material) m.emplace_back("brdfnav:material", format_material_spec(*material));
+  ImageMetadata m{{db::kHeaderEnv, renderer.env().source()},
+                  {db::kHeaderEnvSha1, renderer.env().pixel_hash()},
+                  {db::kHeaderScene, renderer.scene().description()},
+                  {db::kHeaderResolution, std::to_string(renderer.resolution())},
+                  {db::kHeaderRendererRevision, std::to_string(kRendererRevision)},
+                  {db::kHeaderQuality, quality}};
+  if (material) m.emplace_back(db::kHeaderMaterial, format_material_spec(*material));
   return m;
 }
 

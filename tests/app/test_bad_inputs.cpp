@@ -71,12 +71,12 @@ class BadInputs : public ::testing::Test {
 
   // A w x h float map of `channels` channels, every value `fill` except texel (1, 1) = `special`.
   static fs::path write_map(const std::string& name, int w, int h, int channels, float fill,
-                            float special) {
+                            float special, const char* type = "float") {
     const fs::path path = file(name);
     std::vector<float> pixels(static_cast<std::size_t>(w) * h * channels, fill);
     for (int c = 0; c < channels; ++c) pixels[(std::size_t(w) + 1) * channels + c] = special;
     auto out = OIIO::ImageOutput::create(path.string());
-    EXPECT_TRUE(out && out->open(path.string(), OIIO::ImageSpec(w, h, channels, "float")));
+    EXPECT_TRUE(out && out->open(path.string(), OIIO::ImageSpec(w, h, channels, type)));
     EXPECT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
     out->close();
     return path;
@@ -250,20 +250,23 @@ TEST_F(BadInputs, DamagedDatabases) {
   expect_empty(out);
 }
 
-// The metric is defined on radiance: linear floating-point pixels, finite and not negative. An
-// 8-bit file is display-encoded; read as radiance it would give a plausible, wrong distance.
+// The metric is defined on radiance: linear floating-point pixels, finite and not negative, read
+// from OpenEXR. An 8-bit file is display-encoded; read as radiance it would give a plausible,
+// wrong distance.
 TEST_F(BadInputs, ImagesThatAreNotRadiance) {
   const std::string good = write_map("good.exr", 4, 4, 4, 1.f, 1.f).string();
   const std::string nan =
       write_map("nan.exr", 4, 4, 4, 1.f, std::numeric_limits<float>::quiet_NaN()).string();
   const std::string negative = write_map("negative.exr", 4, 4, 4, 1.f, -1.f).string();
   const std::string display = write_map("display.png", 4, 4, 4, 1.f, 1.f).string();
+  const std::string integer = write_map("integer.exr", 4, 4, 4, 1.f, 1.f, "uint").string();
   ASSERT_EQ(run_cli("distance " + good + " " + good).exit_code, 0);
   expect_rejected(run_cli("distance " + good + " " + nan), {nan + ": pixel (1, 1) has R"});
   expect_rejected(run_cli("distance " + negative + " " + good),
                   {negative + ": pixel (1, 1) has R = -1"});
-  expect_rejected(run_cli("distance " + good + " " + display),
-                  {display + ": holds uint8 pixels", "linear floating point"});
+  expect_rejected(run_cli("distance " + good + " " + display), {display + ": not an OpenEXR file"});
+  expect_rejected(run_cli("distance " + integer + " " + good),
+                  {integer + ": holds uint32 pixels", "linear floating point"});
 }
 
 TEST_F(BadInputs, MaterialFiles) {

@@ -1,5 +1,6 @@
 #include <brdfnav/precompute/database.h>
 #include <brdfnav/precompute/fit_study.h>
+#include <brdfnav/precompute/image_output.h>
 #include <brdfnav/precompute/render.h>
 #include <gtest/gtest.h>
 

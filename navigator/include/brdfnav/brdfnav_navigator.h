@@ -2,7 +2,8 @@
  * material's variations at equal visual distance (docs/NAVIGATION.md), and any material's
  * preview thumbnail as an OpenColorIO display shows it, for lookdev tools. It is
  * libbrdfnav_navigator.so, apart from the closures of libbrdfnav.so (brdfnav.h) that a renderer
- * loads: it reads images and manages colour, which a renderer need not take into its process.
+ * loads: it reads the database's images with OpenEXR and manages colour with OpenColorIO, which
+ * a renderer need not take into its process.
  *
  * Conventions are brdfnav.h's, with these of its own:
  * - Hosts that load the library at run time call brdfnav_navigator_abi_version() first and use

@@ -1,6 +1,7 @@
 // The on-disk layout of a database, the one definition its reader (database.cpp) and its writer
-// (the builder's precompute_job.cpp) share: file names, the float32 table format and the YAML of
-// the manifest, of an unfinished build's settings and of a shard.
+// (the builder's precompute_job.cpp) share: file names, the keys of the images' headers, the
+// float32 table format and the YAML of the manifest, of an unfinished build's settings and of a
+// shard.
 #pragma once
 
 #include <brdfnav/navigator/database.h>
@@ -24,6 +25,19 @@ inline constexpr const char* kShardFile = "shard.yaml";
 inline constexpr const char* kDiffuseFile = "diffuse.exr";
 inline constexpr const char* kBasisFile = "embedding/basis.f32";
 inline constexpr const char* kSingularValuesFile = "embedding/singular_values.f32";
+
+// The string attributes of every image's OpenEXR header: how it was rendered. The builder writes
+// them (render_metadata()); Database::open() checks the environment's hash, the scene and a grid
+// image's material against the manifest.
+inline constexpr const char* kHeaderPrefix = "brdfnav:";           // every key starts with it
+inline constexpr const char* kHeaderEnv = "brdfnav:env";           // the map's path
+inline constexpr const char* kHeaderEnvSha1 = "brdfnav:env_sha1";  // its pixels' SHA-1
+inline constexpr const char* kHeaderScene = "brdfnav:scene";       // the scene's description
+inline constexpr const char* kHeaderResolution = "brdfnav:resolution";
+inline constexpr const char* kHeaderRendererRevision = "brdfnav:renderer_revision";
+inline constexpr const char* kHeaderQuality = "brdfnav:quality";  // the render quality settings
+// The material spec (format_material_spec()); absent from the diffuse image.
+inline constexpr const char* kHeaderMaterial = "brdfnav:material";
 
 std::string image_file(ModelId id, std::size_t node);
 std::string coefficients_file(ModelId id);

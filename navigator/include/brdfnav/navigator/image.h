@@ -44,21 +44,37 @@ void check_same_shape(const Image& a, const Image& b);
 // The metric. Throws ImageError when the sizes or the masks (alpha) differ, or no pixel is covered.
 double image_distance(const Image& a, const Image& b);
 
-// Metadata written as string attributes of the EXR header (e.g. {"brdfnav:material", spec}).
+// Metadata written as string attributes of the EXR header (e.g. {db::kHeaderMaterial, spec}).
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 
-// Throws ImageError unless `path` names an OpenEXR file (ends in .exr, any case): a linear image
-// written under another name would be taken for a display-encoded one.
-void check_exr_name(const std::filesystem::path& path);
-// Writes linear float RGBA OpenEXR atomically: on any failure no file is left behind (and an
-// existing file is untouched). Throws ImageError naming the file, or from check_exr_name().
-void write_exr(const Image& image, const std::filesystem::path& path,
-               const ImageMetadata& metadata = {});
-// Reads an RGBA image in a floating-point format OpenImageIO reads (RGB gets alpha 1). Throws
-// ImageError naming the file when it cannot, when it is 8 or 16 bit (display-encoded), or naming
-// the pixel when one is negative or not finite.
+// What an OpenEXR file's header says: its data window's size and its brdfnav string attributes.
+struct ImageHeader {
+  int width = 0, height = 0;
+  ImageMetadata metadata;  // the string attributes whose names start with "brdfnav:"
+  // The attribute's value, or "" when the header has none.
+  std::string attribute(const std::string& name) const;
+};
+
+// The database's images are OpenEXR, read here with OpenEXR alone (no OpenImageIO: the navigator's
+// library must not bring its image libraries into a host; docs/HOSTS.md). The builder writes them
+// (brdfnav/precompute/image_output.h).
+//
+// Reads the header of an OpenEXR file. Throws ImageError naming the file when it is missing, not
+// an OpenEXR file, or unreadable.
+ImageHeader read_image_header(const std::filesystem::path& path);
+// Reads an OpenEXR image's R, G, B and A channels as linear float RGBA (without A, alpha is 1).
+// Throws ImageError naming the file when it cannot, when it is not OpenEXR or its colour channels
+// hold integers (not radiance), or naming the pixel when one is negative or not finite.
 Image read_image(const std::filesystem::path& path);
-// The string attributes of an image file's header that start with "brdfnav:".
+// The string attributes of an OpenEXR file's header that start with "brdfnav:".
 ImageMetadata read_image_metadata(const std::filesystem::path& path);
+
+// `image` resampled to `width` x `height`, every channel alike, each axis by a separable filter:
+// when shrinking, Lanczos-3 with its support widened by the ratio (so every source pixel
+// contributes); when enlarging, Blackman-Harris over 3 source pixels. Those are the filters
+// OpenImageIO's ImageBufAlgo::resize() chooses by default, which the thumbnails used before. The
+// weights of each output pixel are normalised (a constant stays constant) and the edges clamped.
+// Lanczos' lobes may overshoot: values can leave the source's range near sharp edges.
+Image resample(const Image& image, int width, int height);
 
 }  // namespace brdfnav

@@ -127,7 +127,7 @@ std::vector<std::vector<std::size_t>> grid_render_units(ModelId model, const Par
 bool grid_images_differ(ModelId model);
 
 // EXR header attributes recording how an image was made (material, env path and pixel hash,
-// scene, resolution, quality), for write_exr().
+// scene, resolution, quality) under database_format.h's keys, for write_exr() (image_output.h).
 ImageMetadata render_metadata(const Renderer& renderer, const Material* material);
 
 }  // namespace brdfnav
