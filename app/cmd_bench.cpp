@@ -8,7 +8,7 @@
 
 #include <brdfnav/core/grid.h>
 #include <brdfnav/precompute/fit.h>
-#include <brdfnav/precompute/render_accuracy.h>
+#include <brdfnav/studies/render_accuracy.h>
 
 #include <chrono>
 #include <cstdio>
