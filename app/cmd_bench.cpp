@@ -1,6 +1,7 @@
 // `brdfnav bench render`: the pre-renderer's speed and accuracy (docs/RENDERER.md) on this machine,
 // as the Markdown table bench/RESULTS.md records; `brdfnav bench navigator`: the neighbour service;
-// `brdfnav bench fits`: the conversion fits; `brdfnav bench load`: concurrent queries.
+// `brdfnav bench fits`: the conversion fits; `brdfnav bench load`: concurrent queries. The
+// navigator's, load and fidelity benchmarks are bench/cli's (brdfnav::cli_benchmarks).
 #include "bench_fidelity.h"
 #include "bench_load.h"
 #include "bench_navigator.h"
@@ -8,7 +9,7 @@
 
 #include <brdfnav/core/grid.h>
 #include <brdfnav/precompute/fit.h>
-#include <brdfnav/precompute/render_accuracy.h>
+#include <brdfnav/studies/render_accuracy.h>
 
 #include <chrono>
 #include <cstdio>

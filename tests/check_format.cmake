@@ -3,7 +3,7 @@
 # runs, so a file added since CMake ran is checked too.
 # Usage: cmake -DCLANG_FORMAT=clang-format-14 -DROOT=source-dir -P check_format.cmake
 set(sources)
-foreach(dir app bench core navigator ocio plugin precompute tests)
+foreach(dir app bench core navigator ocio plugin precompute studies tests)
   file(GLOB_RECURSE found ${ROOT}/${dir}/*.cpp ${ROOT}/${dir}/*.h ${ROOT}/${dir}/*.c)
   list(APPEND sources ${found})
 endforeach()

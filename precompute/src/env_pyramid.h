@@ -67,11 +67,6 @@ void for_each_texel_piece(int x, int y, int width, int height, int n, F&& f) {
   for_each_texel_piece(texel_frame(x, y, width, height), n, std::forward<F>(f));
 }
 
-// The map's Rec. 709 luminance over the sphere of directions: each texel's times its exact solid
-// angle, summed (over 4 pi, the map's mean luminance). The hot texels are those brighter than a
-// multiple of that mean; `brdfnav validate` reports the map's peak against it.
-double luminance_power(const EnvMap& env);
-
 struct EnvNode {
   Vec3 centroid;  // unit
   Rgb power;

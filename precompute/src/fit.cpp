@@ -1,8 +1,7 @@
 #include <brdfnav/precompute/fit.h>
 
 #include <brdfnav/core/grid.h>
-
-#include "levenberg_marquardt.h"
+#include <brdfnav/precompute/levenberg_marquardt.h>
 
 #include <algorithm>
 #include <numeric>

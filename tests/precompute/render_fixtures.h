@@ -4,7 +4,7 @@
 // of the renderer's hot texels, which these tests measure.
 #pragma once
 
-#include <brdfnav/precompute/render_accuracy.h>
+#include <brdfnav/studies/render_accuracy.h>
 #include <gtest/gtest.h>
 
 #include <unistd.h>

@@ -1,7 +1,7 @@
 #include <brdfnav/precompute/database.h>
-#include <brdfnav/precompute/fit_study.h>
 #include <brdfnav/precompute/image_output.h>
 #include <brdfnav/precompute/render.h>
+#include <brdfnav/studies/fit_study.h>
 #include <gtest/gtest.h>
 
 #include <unistd.h>

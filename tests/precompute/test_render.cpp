@@ -4,7 +4,7 @@
 
 #include "every_model.h"
 
-#include <brdfnav/precompute/render_accuracy.h>
+#include <brdfnav/studies/render_accuracy.h>
 #include <gtest/gtest.h>
 
 #include <unistd.h>

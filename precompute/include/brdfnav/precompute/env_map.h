@@ -86,4 +86,10 @@ class EnvMap {
   std::string source_, hash_;
 };
 
+// The map's Rec. 709 luminance over the sphere of directions: each texel's times its exact solid
+// angle, summed (over 4 pi, the map's mean luminance). The renderer's hot texels are those
+// brighter than a multiple of that mean (env_pyramid.cpp, which defines it with the texels' solid
+// angles); `brdfnav validate` reports the map's peak against it (studies/src/validation.cpp).
+double luminance_power(const EnvMap& env);
+
 }  // namespace brdfnav

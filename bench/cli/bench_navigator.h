@@ -1,4 +1,4 @@
-// `brdfnav bench navigator` (app/bench_navigator.cpp).
+// `brdfnav bench navigator` (bench/cli/bench_navigator.cpp).
 #pragma once
 
 #include <brdfnav/core/material.h>

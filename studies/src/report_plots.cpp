@@ -1,10 +1,10 @@
-#include "validation_report.h"
+#include <brdfnav/studies/validation_report.h>
 
-#include "plot.h"
+#include <brdfnav/studies/plot.h>
 
 #include <cstdio>
 
-namespace brdfnav::cli {
+namespace brdfnav {
 
 namespace {
 
@@ -156,4 +156,4 @@ std::vector<ReportFile> write_report_plots(const std::filesystem::path& dir,
   return w.files;
 }
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav

@@ -1,4 +1,4 @@
-#include "validation_report.h"
+#include <brdfnav/studies/validation_report.h>
 
 #include <yaml-cpp/yaml.h>
 
@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <sstream>
 
-namespace brdfnav::cli {
+namespace brdfnav {
 
 namespace {
 
@@ -442,4 +442,4 @@ std::string report_markdown(const ValidationResults& r, const std::vector<Report
   return md.str();
 }
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav

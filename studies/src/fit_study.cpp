@@ -1,8 +1,7 @@
-#include <brdfnav/precompute/fit_study.h>
-
-#include "levenberg_marquardt.h"
+#include <brdfnav/studies/fit_study.h>
 
 #include <brdfnav/core/statistics.h>
+#include <brdfnav/precompute/levenberg_marquardt.h>
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "plot.h"
+#include <brdfnav/studies/plot.h>
 
 #include <brdfnav/core/atomic_file.h>
 
@@ -11,7 +11,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace brdfnav::cli {
+namespace brdfnav {
 
 namespace {
 
@@ -168,4 +168,4 @@ StripSize write_image_strip(const std::filesystem::path& png, const std::string&
   return size;
 }
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav

@@ -1,4 +1,4 @@
-#include <brdfnav/precompute/render_accuracy.h>
+#include <brdfnav/studies/render_accuracy.h>
 
 #include <brdfnav/core/grid.h>
 

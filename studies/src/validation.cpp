@@ -1,10 +1,9 @@
-#include <brdfnav/precompute/validation.h>
+#include <brdfnav/studies/validation.h>
 
 #include <brdfnav/core/cielab.h>
 #include <brdfnav/core/statistics.h>
+#include <brdfnav/precompute/env_map.h>
 #include <brdfnav/precompute/fit.h>
-
-#include "env_pyramid.h"
 
 #include <algorithm>
 #include <cmath>

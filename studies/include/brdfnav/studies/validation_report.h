@@ -4,15 +4,15 @@
 #pragma once
 
 #include <brdfnav/ocio/color_pipeline.h>
-#include <brdfnav/precompute/fit_study.h>
-#include <brdfnav/precompute/validation.h>
+#include <brdfnav/studies/fit_study.h>
+#include <brdfnav/studies/validation.h>
 
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace brdfnav::cli {
+namespace brdfnav {
 
 // Figure 2 under one environment map, named by the map's file stem.
 struct NamedPellacini {
@@ -53,4 +53,4 @@ std::vector<ReportFile> write_report_plots(const std::filesystem::path& dir,
 std::string report_yaml(const ValidationResults& results, const std::vector<ReportFile>& files);
 std::string report_markdown(const ValidationResults& results, const std::vector<ReportFile>& files);
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav

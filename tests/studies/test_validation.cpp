@@ -1,6 +1,6 @@
 // The computations behind `brdfnav validate` on inputs whose answers are known by hand; the
 // studies themselves run end to end in tests/app/test_cli_validate.cpp.
-#include <brdfnav/precompute/validation.h>
+#include <brdfnav/studies/validation.h>
 
 #include <gtest/gtest.h>
 

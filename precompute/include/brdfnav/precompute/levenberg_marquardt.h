@@ -1,5 +1,8 @@
 // Eigen's Levenberg-Marquardt with a forward-difference Jacobian over a residual function, the
-// one optimiser of the conversion fits (fit.cpp) and of the image-metric fits (fit_study.cpp).
+// one optimiser of the conversion fits (precompute/src/fit.cpp) and of the image-metric fits
+// (studies/src/fit_study.cpp). Public so that the studies fit with the builder's own optimiser:
+// an image fit is compared with the database's BRDF-space fit, and the two must differ only in
+// what they minimise.
 #pragma once
 
 #include <unsupported/Eigen/LevenbergMarquardt>

@@ -1,4 +1,5 @@
-// `brdfnav bench fidelity` (app/bench_fidelity.cpp): what the artist sees against exact renders.
+// `brdfnav bench fidelity` (bench/cli/bench_fidelity.cpp): what the artist sees against exact
+// renders.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// `brdfnav bench load` (app/bench_load.cpp).
+// `brdfnav bench load` (bench/cli/bench_load.cpp).
 #pragma once
 
 #include <string>

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace brdfnav::cli {
+namespace brdfnav {
 
 struct PlotSeries {
   std::string label;
@@ -47,4 +47,4 @@ struct StripSize {
 StripSize write_image_strip(const std::filesystem::path& png, const std::string& title,
                             const std::vector<StripTile>& tiles);
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav
