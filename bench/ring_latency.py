@@ -6,10 +6,13 @@
     bench/ring_latency.py --url http://127.0.0.1:8080 [--exact] [--radius 0.03]
 
 For each model of the database, three materials (each parameter at 30%, 50% and 70% of its grid,
-grey rho_d 0.2 and rho_s 0.3) and each of the lobe, diffuse, specular and models tabs: one
-POST /api/neighbors (with "exact": true under --exact), then the exact thumbnails of the centre
-and every offer, 8 at a time as a browser fetches them. Prints median, p95 and max seconds per
-model. Start a fresh server for each run: its cache of renders would otherwise answer.
+grey rho_d 0.2 and rho_s 0.3) and each of the lobe, diffuse, specular and models tabs, as the page
+does: under --exact, POST /api/neighbors with "exact": true started at once and, beside it, the
+embedding's ring (the same query without it) and the previews of the centre and its offers, 8 at
+a time as a browser fetches them (the "preview" time); then the exact ring's thumbnails (the
+"final" time). Without --exact, the embedding's ring and its exact thumbnails. Prints median, p95
+and max seconds per model. Start a fresh server for each run: its cache of renders would
+otherwise answer.
 """
 
 import argparse
@@ -44,26 +47,37 @@ def main():
         return {"model": model["name"], "params": params, "rho_d": [0.2] * 3, "rho_s": [0.3] * 3,
                 "colorspace": "lin_rec709"}
 
+    def thumbnails(materials, preview):
+        with concurrent.futures.ThreadPoolExecutor(8) as pool:
+            list(pool.map(lambda m: post("/api/thumbnail", {"material": m, "preview": preview}),
+                          materials))
+
+    def quantiles(seconds):
+        seconds = sorted(seconds)
+        p95 = seconds[min(len(seconds) - 1, round(0.95 * (len(seconds) - 1)))]
+        return f"{statistics.median(seconds):.3f} | {p95:.3f} | {seconds[-1]:.3f}"
+
     print(f"{args.url}: radius {args.radius}, {'exact' if args.exact else 'embedded'} steps")
-    print("| model | rings | median s | p95 s | max s |\n|---|---:|---:|---:|---:|")
+    print("| model | rings | preview median s | p95 s | max s | final median s | p95 s | max s |\n"
+          "|---|---:|---:|---:|---:|---:|---:|---:|")
     for model in info["models"]:
-        seconds = []
+        previews, finals = [], []
         for fraction in (0.3, 0.5, 0.7):
             for tab in ("lobe", "diffuse", "specular", "models"):
                 current = material(model, fraction)
                 started = time.monotonic()
-                query = {"material": current, "radius": args.radius, "tab": tab,
-                         "exact": args.exact}
-                offers = json.loads(post("/api/neighbors", query))["neighbors"]
-                shown = [current] + [n["material"] for n in offers]
-                with concurrent.futures.ThreadPoolExecutor(8) as pool:
-                    list(pool.map(lambda m: post("/api/thumbnail", {"material": m}), shown))
-                seconds.append(time.monotonic() - started)
-        seconds.sort()
-        p95 = seconds[min(len(seconds) - 1, round(0.95 * (len(seconds) - 1)))]
-        print(f"| {model['name']} | {len(seconds)} | {statistics.median(seconds):.2f} | "
-              f"{p95:.2f} | {seconds[-1]:.2f} |", flush=True)
-
+                query = {"material": current, "radius": args.radius, "tab": tab}
+                with concurrent.futures.ThreadPoolExecutor(1) as side:
+                    placed = side.submit(post, "/api/neighbors", {**query, "exact": args.exact})
+                    if args.exact:
+                        quick = json.loads(post("/api/neighbors", query))["neighbors"]
+                        thumbnails([current] + [n["material"] for n in quick], True)
+                        previews.append(time.monotonic() - started)
+                    offers = json.loads(placed.result())["neighbors"]
+                thumbnails([current] + [n["material"] for n in offers], False)
+                finals.append(time.monotonic() - started)
+        shown = quantiles(previews) if previews else "- | - | -"
+        print(f"| {model['name']} | {len(finals)} | {shown} | {quantiles(finals)} |", flush=True)
 
 if __name__ == "__main__":
     main()

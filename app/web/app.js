@@ -212,7 +212,8 @@ function ringLayout(count) {
 // The variations on a circle (or an ellipse) around the centre, in the service's ring order:
 // offer i at angle 2 pi i / n clockwise from the top, so that each offer faces its opposite
 // (i + n/2) across the current material, with no gap however many there are.
-function drawRing(neighbors) {
+function drawRing(neighbors, placeholders = new Map()) {
+  ringFocus ||= $('#ring').contains(document.activeElement);
   const { rx, ry } = ringLayout(neighbors.length);
   const boxes = ringBoxes(neighbors.length, rx, ry);
   const stage = $('#stage');
@@ -233,6 +234,7 @@ function drawRing(neighbors) {
     if (n.distance < 1e-3 * state.radius) button.classList.add('no-step');
     const img = document.createElement('img');
     img.alt = '';  // the caption names it
+    if (placeholders.has(n.label)) img.src = placeholders.get(n.label);
     button.append(img, caption(n));
     button.addEventListener('click', () => navigate(n.material));
     return button;
@@ -304,6 +306,18 @@ async function sharpen(img, material, gen) {
   if (gen === generation) img.dataset.size = String(size);
 }
 
+// The ring the embedding places, shown in previews until the exact one replaces it (clickable:
+// its offers are good materials at about eps). Resolves, once its previews are drawn, to each
+// offer's preview by label: the exact ring's placeholders, so that nothing flickers.
+async function previewRing({ neighbors }, gen) {
+  if (gen !== generation) return new Map();
+  const images = drawRing(neighbors);
+  $('#ring').setAttribute('aria-busy', 'true');  // the exact ring is on its way
+  await Promise.all(images.map(([n, img]) =>
+    show(img, thumbnail(n.material, gen, true), gen).catch(() => {})));
+  return new Map(images.map(([n, img]) => [n.label, img.src]));
+}
+
 function showError(message) {
   $('#error').textContent = message;
   $('#error').hidden = !message;
@@ -334,11 +348,17 @@ async function redraw() {
   try {
     const centreShown = progressive(centre.querySelector('img'), material, gen);
     centreShown.catch(() => {});  // awaited below, unless this redraw is overtaken first
-    const { neighbors } = await (await call('/api/neighbors',
-      { material, radius: state.radius, tab: state.tab, exact, ring: ring(gen) },
-      { signal: neighborQuery.signal })).json();
+    const query = (steps) => call('/api/neighbors',
+      { material, radius: state.radius, tab: state.tab, exact: steps, ring: ring(gen) },
+      { signal: neighborQuery.signal }).then((r) => r.json());
+    const placed = exact ? query(true) : null;
+    placed?.catch(() => {});  // awaited below, unless this redraw is overtaken first
+    // While renders place the ring: the embedding's ring at once, in previews, in its place.
+    const placeholders = exact ? await previewRing(await query(false), gen) : undefined;
     if (gen !== generation) return;
-    const images = drawRing(neighbors);
+    const { neighbors } = await (placed ?? query(false));
+    if (gen !== generation) return;
+    const images = drawRing(neighbors, placeholders);
     let done = 0;
     const total = images.length + 1;
     const step = () => progress.set(`Rendering thumbnails ${++done} / ${total}`, done, total);

@@ -514,7 +514,8 @@ test('every query and thumbnail names its ring, so that the server drops the rin
   assert.equal(new Set(rings.map((r) => r.client)).size, 1, 'one client id per page');
   assert.match(rings[0].client, /^[\w-]{1,64}$/);
   // The lobe tab's ring comes after the diffuse tab's.
-  const ids = rings.filter((r) => r.path === '/api/neighbors').map((r) => r.id);
+  // (With exact steps a ring asks twice: the embedding's ring first, shown in previews.)
+  const ids = [...new Set(rings.filter((r) => r.path === '/api/neighbors').map((r) => r.id))];
   assert.ok(ids.length === 2 && ids[1] > ids[0], `rings ${ids}`);
 });
 
