@@ -1,5 +1,6 @@
 #include "export_formats.h"
 
+#include <brdfnav/navigator/navigation_json.h>
 #include <brdfnav/navigator/navigation_yaml.h>
 #include <brdfnav/precompute/render.h>
 
@@ -127,18 +128,6 @@ std::string_view export_content_type(ExportFormat format) {
 
 std::string_view export_extension(ExportFormat format) {
   return info_of(format).extension;
-}
-
-nlohmann::ordered_json material_json(const Material& m) {
-  const ModelInfo& info = model_info(m.model);
-  nlohmann::ordered_json params = nlohmann::ordered_json::object();
-  for (std::size_t i = 0; i < info.params.size(); ++i)
-    params[std::string(info.params[i].name)] = m.params[i];
-  return {{"model", info.name},
-          {"params", params},
-          {"rho_d", {m.rho_d[0], m.rho_d[1], m.rho_d[2]}},
-          {"rho_s", {m.rho_s[0], m.rho_s[1], m.rho_s[2]}},
-          {"colorspace", m.colorspace}};
 }
 
 RendererExport make_renderer_export(const Navigator& navigator, const Material& chosen,

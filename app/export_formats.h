@@ -24,10 +24,6 @@ ExportFormat parse_export_format(std::string_view name);
 std::string_view export_content_type(ExportFormat format);
 std::string_view export_extension(ExportFormat format);  // ".yaml", ".mtlx", ".json"
 
-// A material as JSON: {model, params: {name: value}, rho_d, rho_s, colorspace} (the serve API's
-// form, and the Cycles export's).
-nlohmann::ordered_json material_json(const Material& m);
-
 // What a renderer's export states.
 struct RendererExport {
   Material chosen;  // the material as chosen

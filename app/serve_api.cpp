@@ -3,6 +3,7 @@
 #include "export_formats.h"
 
 #include <brdfnav/io/material_yaml.h>
+#include <brdfnav/navigator/navigation_json.h>
 #include <brdfnav/navigator/navigation_yaml.h>
 #include <brdfnav/navigator/silhouette.h>
 
@@ -209,17 +210,6 @@ int read_clusters(const json& request) {
   return it->get<int>();
 }
 
-json neighbor_json(const Neighbor& n) {
-  json flags = json::array();
-  if (n.at_boundary) flags.push_back("at_boundary");
-  if (n.clamped) flags.push_back("clamped");
-  if (n.beyond_radius) flags.push_back("beyond_radius");
-  return {{"tab", tab_name(n.tab)}, {"label", n.label},
-          {"words", n.words},       {"change", n.change},
-          {"opposite", n.opposite}, {"distance", n.distance},
-          {"flags", flags},         {"material", material_json(n.material)}};
-}
-
 json model_json(const ModelInfo& info, const ParamGrid& grid) {
   json params = json::array();
   for (std::size_t d = 0; d < info.params.size(); ++d) {
@@ -409,7 +399,7 @@ ApiResponse NavigatorApi::neighbors(std::string_view body) const {
     json list = json::array();
     for (const Neighbor& n : navigator_.neighbors(current, radius, tab, read_clusters(request),
                                                   steps ? &*steps : nullptr))
-      list.push_back(neighbor_json(n));
+      list.push_back(json(neighbor_json(n)));
     return json_response({{"neighbors", list}});
   });
 }

@@ -351,12 +351,11 @@ async function redraw() {
     const query = (steps) => call('/api/neighbors',
       { material, radius: state.radius, tab: state.tab, exact: steps, ring: ring(gen) },
       { signal: neighborQuery.signal }).then((r) => r.json());
-    const placed = exact ? query(true) : null;
-    placed?.catch(() => {});  // awaited below, unless this redraw is overtaken first
-    // While renders place the ring: the embedding's ring at once, in previews, in its place.
+    // With exact steps: the embedding's ring at once, in previews, until renders place the
+    // ring; the exact query starts once the previews are shown, so as not to slow them down.
     const placeholders = exact ? await previewRing(await query(false), gen) : undefined;
     if (gen !== generation) return;
-    const { neighbors } = await (placed ?? query(false));
+    const { neighbors } = await query(exact);
     if (gen !== generation) return;
     const images = drawRing(neighbors, placeholders);
     let done = 0;

@@ -23,9 +23,7 @@ void emit_material_entry(YAML::Emitter& out, const Material& m) {
 
 void emit_flags(YAML::Emitter& out, const Neighbor& n) {
   out << YAML::Key << "flags" << YAML::Value << YAML::Flow << YAML::BeginSeq;
-  if (n.at_boundary) out << "at_boundary";
-  if (n.clamped) out << "clamped";
-  if (n.beyond_radius) out << "beyond_radius";
+  for (std::string_view flag : flag_names(n)) out << std::string(flag);
   out << YAML::EndSeq;
 }
 

@@ -103,6 +103,14 @@ std::optional<Tab> find_tab(std::string_view name) {
   return std::nullopt;
 }
 
+std::vector<std::string_view> flag_names(const Neighbor& n) {
+  std::vector<std::string_view> names;
+  if (n.at_boundary) names.emplace_back("at_boundary");
+  if (n.clamped) names.emplace_back("clamped");
+  if (n.beyond_radius) names.emplace_back("beyond_radius");
+  return names;
+}
+
 Navigator Navigator::open(const std::filesystem::path& dir, const NavigatorOptions& options) {
   return Navigator(Database::open(dir), options);
 }

@@ -7,6 +7,7 @@
 #include <brdfnav/core/cielab.h>
 #include <brdfnav/io/material_yaml.h>
 #include <brdfnav/navigator/database_format.h>
+#include <brdfnav/navigator/navigation_json.h>
 #include <brdfnav/navigator/navigation_yaml.h>
 #include <brdfnav/navigator/navigator.h>
 #include <gmock/gmock.h>
@@ -564,6 +565,29 @@ TEST(NavigationYaml, NeighbourListsReadBackWithTheirStableKeys) {
   }
   EXPECT_TRUE(some_flag) << "radius 0.3 should reach some boundary";
   EXPECT_EQ(neighbors_to_yaml({}), "neighbors: []\n");
+}
+
+// The JSON forms: a material reads back through the material reader (JSON is YAML's flow
+// syntax), and a neighbour carries its fields and flags in their YAML names.
+TEST(NavigationJson, AMaterialReadsBackAndANeighbourKeepsItsFields) {
+  Material m = default_material(ModelId::he);
+  m.params = {0.3, 7.5, 1.9};
+  m.rho_d = Rgb(0.1, 0.2, 0.3);
+  m.rho_s = Rgb(0.4, 0.5, 0.6);
+  const nlohmann::ordered_json j = material_json(m);
+  EXPECT_EQ(j.at("model"), "he");
+  EXPECT_EQ(j.at("params").begin().key(), "sigma");  // the model's parameter order
+  const Material back = material_from_node(YAML::Load(j.dump()), "json", false);
+  EXPECT_TRUE(same(back, m));
+  Neighbor n{.tab = Tab::models, .label = "ward", .material = m, .distance = 0.03};
+  n.clamped = n.beyond_radius = true;
+  n.words = "as Ward";
+  const nlohmann::ordered_json nj = neighbor_json(n);
+  EXPECT_EQ(nj.at("tab"), "models");
+  EXPECT_EQ(nj.at("flags"), nlohmann::json::parse(R"(["clamped", "beyond_radius"])"));
+  EXPECT_EQ(nj.at("opposite"), -1);
+  EXPECT_EQ(nj.at("material"), j);
+  EXPECT_THAT(neighbors_to_yaml({n}), HasSubstr("flags: [clamped, beyond_radius]"));
 }
 
 TEST(NavigationYaml, AnExportReadsBackAsItsMaterial) {

@@ -78,6 +78,10 @@ struct Neighbor {
   int opposite = -1;
 };
 
+// The names of a neighbour's flags, in this order: "at_boundary", "clamped", "beyond_radius"
+// (the `flags` list of its YAML and JSON forms).
+std::vector<std::string_view> flag_names(const Neighbor& n);
+
 // A material's best fit by another model (the database's conversion tables, interpolated).
 struct Equivalent {
   Material material;
