@@ -584,7 +584,7 @@ TEST(NavigationJson, AMaterialReadsBackAndANeighbourKeepsItsFields) {
   n.words = "as Ward";
   const nlohmann::ordered_json nj = neighbor_json(n);
   EXPECT_EQ(nj.at("tab"), "models");
-  EXPECT_EQ(nj.at("flags"), nlohmann::json::parse(R"(["clamped", "beyond_radius"])"));
+  EXPECT_EQ(nj.at("flags"), nlohmann::ordered_json::parse(R"(["clamped", "beyond_radius"])"));
   EXPECT_EQ(nj.at("opposite"), -1);
   EXPECT_EQ(nj.at("material"), j);
   EXPECT_THAT(neighbors_to_yaml({n}), HasSubstr("flags: [clamped, beyond_radius]"));
