@@ -67,9 +67,11 @@ fs::path write_exr_file(const std::string& file, int w, int h, const std::vector
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       for (std::size_t c = 0; c < n; ++c) {
-        floats[(std::size_t(y) * w + x) * n + c] = float(value(x, y, int(c)));
-        uints[(std::size_t(y) * w + x) * n + c] = unsigned(value(x, y, int(c)));
-        halves[(std::size_t(y) * w + x) * n + c] = Imath::half(float(value(x, y, int(c))));
+        const double v = value(x, y, int(c));
+        floats[(std::size_t(y) * w + x) * n + c] = float(v);
+        // Only a UINT channel reads these; a NaN or negative value has no unsigned form.
+        uints[(std::size_t(y) * w + x) * n + c] = v >= 0 && v < 4e9 ? unsigned(v) : 0u;
+        halves[(std::size_t(y) * w + x) * n + c] = Imath::half(float(v));
       }
   // The frame buffer holds each channel in the file's type (OpenEXR writes without converting).
   Imf::FrameBuffer frame;
