@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <functional>
 #include <iterator>
 #include <optional>
 #include <stdexcept>
@@ -189,6 +190,15 @@ std::optional<RingId> read_ring(const json& request) {
   return RingId{name, id.get<std::uint64_t>()};
 }
 
+// Records the request's `ring` in `rings`, if it has one, and returns what its renders call
+// first: it throws RingLeft once the page has asked for a later ring (empty without a ring).
+std::function<void()> enter_ring(LeftRings& rings, const json& request) {
+  const std::optional<RingId> ring = read_ring(request);
+  if (!ring) return nullptr;
+  rings.enter(*ring);
+  return rings.check(*ring);
+}
+
 // The "size" of a thumbnail: one of `sizes` (the first, the thumbnails' resolution, when absent).
 int read_size(const json& request, const std::vector<int>& sizes) {
   const auto it = request.find("size");
@@ -196,9 +206,9 @@ int read_size(const json& request, const std::vector<int>& sizes) {
   if (it->is_number_integer() &&
       std::find(sizes.begin(), sizes.end(), it->get<int>()) != sizes.end())
     return it->get<int>();
-  std::string list;
-  for (int s : sizes) list += (list.empty() ? "" : ", ") + std::to_string(s);
-  throw RequestError("size", "expected one of " + list + ", got " + shown(*it));
+  std::vector<std::string> names;
+  for (int s : sizes) names.push_back(std::to_string(s));
+  throw RequestError("size", "expected one of " + join(names) + ", got " + shown(*it));
 }
 
 int read_clusters(const json& request) {
@@ -390,12 +400,11 @@ ApiResponse NavigatorApi::neighbors(std::string_view body) const {
     const Material current = read_material(navigator_.database(), require(request, "material"));
     const double radius = read_radius(require(request, "radius"));
     const Tab tab = read_tab(require(request, "tab"));
-    const std::optional<RingId> ring = read_ring(request);
-    if (ring) rings_.enter(*ring);
+    std::function<void()> before_render = enter_ring(rings_, request);
     std::optional<ExactSteps> steps;
     if (read_flag(request, "exact"))
       steps = exact_.steps_from(current, navigator_.database().manifest().resolution,
-                                ring ? rings_.check(*ring) : nullptr);
+                                std::move(before_render));
     json list = json::array();
     for (const Neighbor& n : navigator_.neighbors(current, radius, tab, read_clusters(request),
                                                   steps ? &*steps : nullptr))
@@ -415,11 +424,10 @@ ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
     if (quick && size != thumbnails_.resolution())
       throw RequestError(
           "size", "a preview is drawn at " + std::to_string(thumbnails_.resolution()) + " px only");
-    const std::optional<RingId> ring = read_ring(request);
-    if (ring) rings_.enter(*ring);
+    const std::function<void()> before_render = enter_ring(rings_, request);
     const std::shared_ptr<const Image> rendered =
         quick ? std::make_shared<const Image>(thumbnails_.render(m))
-              : exact_.render(m, size, ring ? rings_.check(*ring) : nullptr);
+              : exact_.render(m, size, before_render);
     const bool sphere = navigator_.database().manifest().scene == "sphere";
     return ApiResponse{200, "image/png", display_png(*rendered, sphere, colour_, display, view)};
   });
