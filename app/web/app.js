@@ -176,8 +176,9 @@ function caption(n) {
 }
 
 // The ring's geometry in CSS pixels. A variation is a 176 x 232 box (its 160 px image, padding
-// and three caption lines: a name of up to two, its distance) placed by its image's centre, 84 px below the box's top; the centre's
-// 256 px image and caption take -128..128 across and -128..162 down around the middle.
+// and three caption lines: a name of up to two, its distance) placed by its image's centre, 84 px
+// below the box's top; the centre's 256 px image and caption take -128..128 across and -128..162
+// down around the middle.
 const BOX = { width: 176, height: 232, above: 84 };
 const CENTRE = { left: -128, right: 128, top: -128, bottom: 162 };
 const MAX_RX = 408;  // a stage of 2 * 408 + 176 = 992 px fits a 1024 px window
@@ -345,6 +346,7 @@ async function redraw() {
   // The gallery's offers are the database's own materials: nothing to render to place them.
   const exact = state.exact && state.tab !== 'gallery';
   progress.start(exact ? 'Rendering to place the variations\u2026' : 'Finding variations\u2026');
+  let shown = false;  // every image of the ring: the centre's sharp render follows
   try {
     const centreShown = progressive(centre.querySelector('img'), material, gen);
     centreShown.catch(() => {});  // awaited below, unless this redraw is overtaken first
@@ -366,10 +368,7 @@ async function redraw() {
       ...images.map(([n, img]) => progressive(img, n.material, gen).then(step))]);
     if (gen !== generation) return;
     showError('');
-    progress.stop();
-    document.body.dataset.ready = 'true';
-    await sharpen(centre.querySelector('img'), material, gen);
-    return;
+    shown = true;
   } catch (error) {
     if (error.name === 'AbortError' || gen !== generation) return;
     if ($('#ring').hasAttribute('aria-busy')) clearRing();  // still the previous state's ring
@@ -377,6 +376,11 @@ async function redraw() {
   }
   progress.stop();
   document.body.dataset.ready = 'true';
+  if (shown) {
+    await sharpen(centre.querySelector('img'), material, gen).catch((error) => {
+      if (gen === generation) showError(error.message);
+    });
+  }
 }
 
 // ---- actions --------------------------------------------------------------------------------
