@@ -22,7 +22,7 @@ namespace brdfnav::cli {
 namespace {
 
 struct BenchOptions {
-  SceneOptions scene;
+  RenderSetup setup;
   std::string model;  // empty: all
   int repeats = 3;
   bool accuracy = true;
@@ -119,13 +119,13 @@ std::string ratio_cell(const std::vector<AccuracyResult>& results) {
 }
 
 void run_render_bench(const BenchOptions& o) {
-  const EnvMap env = load_env(o.scene);
-  const Scene scene = load_scene(o.scene);
-  Renderer renderer(env, scene, o.scene.resolution);
+  const EnvMap env = load_env(o.setup);
+  const Scene scene = load_scene(o.setup);
+  Renderer renderer(env, scene, o.setup.resolution);
   RenderOptions reference_options;
   reference_options.quality = reference_quality(renderer.options().quality);
-  Renderer reference(env, scene, o.scene.resolution, reference_options);
-  std::printf("resolution %d, %s, %s\n\n", o.scene.resolution, env.source().c_str(),
+  Renderer reference(env, scene, o.setup.resolution, reference_options);
+  std::printf("resolution %d, %s, %s\n\n", o.setup.resolution, env.source().c_str(),
               scene.description().c_str());
   std::printf("| model | setting | ms per image | accuracy ratio per parameter |\n");
   std::printf("|---|---|---|---|\n");
@@ -206,8 +206,8 @@ void add_bench_commands(CLI::App& app) {
   auto* render = bench->add_subcommand(
       "render", "ms per image and accuracy ratio (vs 16x the samples) per model and setting");
   auto o = std::make_shared<BenchOptions>();
-  o->scene.resolution = 128;
-  add_scene_options(*render, o->scene);
+  o->setup.resolution = 128;
+  add_render_setup_options(*render, o->setup);
   render->add_option("--model", o->model, "Only this model");
   render->add_option("--repeats", o->repeats, "Timed renders per setting")
       ->capture_default_str()
@@ -217,7 +217,7 @@ void add_bench_commands(CLI::App& app) {
                    "Also the strongly anisotropic Ward settings (slow: their references are)");
   render->callback([o] {
     if (!o->model.empty() && !find_model(o->model))
-      throw std::runtime_error("--model: unknown model '" + o->model + "'");
+      throw Error(ErrorCode::invalid_argument, "--model", "unknown model '" + o->model + "'");
     run_render_bench(*o);
   });
 

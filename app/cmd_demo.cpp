@@ -111,12 +111,12 @@ std::array<std::string, 2> label_lines(std::string_view label) {
 // Every setting rendered on the sphere under the environment, in one labelled sheet (sRGB): a
 // grid of cells as wide as the widest label line, each label centred under its sphere, with a
 // margin around and between cells so that no label runs into its neighbour or off the sheet.
-void write_sphere_sheet(const std::filesystem::path& dir, const SceneOptions& scene_options) {
+void write_sphere_sheet(const std::filesystem::path& dir, const RenderSetup& setup) {
   namespace IBA = OIIO::ImageBufAlgo;
-  const EnvMap env = load_env(scene_options);
-  const Scene scene = load_scene(scene_options);
-  Renderer renderer(env, scene, scene_options.resolution);
-  const int res = scene_options.resolution, columns = 6, gap = 12, font = 13;
+  const EnvMap env = load_env(setup);
+  const Scene scene = load_scene(setup);
+  Renderer renderer(env, scene, setup.resolution);
+  const int res = setup.resolution, columns = 6, gap = 12, font = 13;
   const int line = font + font / 3, label_h = 6 + 2 * line;
   const char* font_name = "DejaVuSans";
   int cell_w = res;
@@ -148,7 +148,7 @@ void write_sphere_sheet(const std::filesystem::path& dir, const SceneOptions& sc
   sheet.set_write_format(OIIO::TypeDesc::UINT8);
   AtomicOutput out(dir / "spheres.png");
   if (!sheet.write(out.temp_path().string()))
-    throw std::runtime_error((dir / "spheres.png").string() + ": " + sheet.geterror());
+    throw Error(ErrorCode::io, (dir / "spheres.png").string(), sheet.geterror());
   out.commit();
 }
 
@@ -158,16 +158,16 @@ void add_demo_command(CLI::App& app) {
   auto* demo = app.add_subcommand(
       "demo", "Plot the six models' lobes, tabulate their albedo and render them on a sphere");
   auto out = std::make_shared<std::string>("out/demo");
-  auto scene = std::make_shared<SceneOptions>();
-  scene->resolution = 128;
+  auto setup = std::make_shared<RenderSetup>();
+  setup->resolution = 128;
   demo->add_option("--out", *out, "Output directory")->capture_default_str();
-  add_scene_options(*demo, *scene);
+  add_render_setup_options(*demo, *setup);
   demo->callback([=] {
     const std::filesystem::path dir(*out);
     std::filesystem::create_directories(dir);
     write_lobe_plot(dir);
     print_albedo_table(dir);
-    write_sphere_sheet(dir, *scene);
+    write_sphere_sheet(dir, *setup);
     std::printf("\nWrote %s (lobes), %s (the settings on a sphere), %s and %s\n",
                 (dir / "lobes.png").c_str(), (dir / "spheres.png").c_str(),
                 (dir / "lobes.csv").c_str(), (dir / "albedo.csv").c_str());

@@ -16,10 +16,11 @@ Vec3 parse_direction(const std::string& text, const std::string& option) {
   in >> v.x() >> comma1 >> v.y() >> comma2 >> v.z();
   std::string rest;
   if (!in || comma1 != ',' || comma2 != ',' || (in >> rest))
-    throw std::runtime_error(option + ": expected three numbers x,y,z, got '" + text + "'");
-  if (!v.allFinite()) throw std::runtime_error(option + ": components must be finite");
+    throw Error(ErrorCode::invalid_argument, option,
+                "expected three numbers x,y,z, got '" + text + "'");
+  if (!v.allFinite()) throw Error(ErrorCode::invalid_argument, option, "components must be finite");
   const std::optional<Vec3> unit = unit_direction(v);
-  if (!unit) throw std::runtime_error(option + ": direction has zero length");
+  if (!unit) throw Error(ErrorCode::invalid_argument, option, "direction has zero length");
   return *unit;
 }
 

@@ -43,16 +43,6 @@ const CLI::Validator& radius_validator() {
 
 namespace {
 
-// Runs `body`, prefixing any failure with the option whose value caused it.
-template <typename Body>
-auto for_option(const char* option, Body&& body) {
-  try {
-    return body();
-  } catch (const std::exception& e) {
-    throw std::runtime_error(std::string(option) + ": " + e.what());
-  }
-}
-
 std::vector<std::string> tab_choices() {
   std::vector<std::string> names;
   for (Tab tab : kTabs) names.emplace_back(tab_name(tab));
@@ -74,11 +64,11 @@ void add_inputs(CLI::App& cmd, Inputs& in) {
 Navigator open_navigator(const Inputs& in) {
   NavigatorOptions options;
   options.threads = in.threads;
-  return for_option("--db", [&] { return Navigator::open(in.db, options); });
+  return with_context("--db", [&] { return Navigator::open(in.db, options); });
 }
 
 Material load_current(const Inputs& in) {
-  return for_option("--material", [&] { return load_material(in.material); });
+  return with_context("--material", [&] { return load_material(in.material); });
 }
 
 void add_neighbors_command(CLI::App& app) {
@@ -169,7 +159,7 @@ void add_variations_command(CLI::App& app) {
     const ocio::ColorPipeline pipeline;
     const std::string d = display->empty() ? pipeline.default_display() : *display;
     const std::string v = view->empty() ? pipeline.default_view(d) : *view;
-    for_option("--display/--view", [&] { pipeline.validate(d, v); });
+    with_context("--display/--view", [&] { pipeline.validate(d, v); });
     const Thumbnails thumbnails(navigator.database(), *size);
     const Tab t = *find_tab(*tab);
     std::vector<ocio::SheetTile> tiles;

@@ -39,12 +39,13 @@ void print_info(const Database& db) {
   std::printf("files: %zu (all checksums verified)\n", m.files.size());
 }
 
-// "i/N" -> (i, N); throws std::runtime_error naming --shard unless 0 <= i < N.
+// "i/N" -> (i, N); throws Error(invalid_argument) naming --shard unless 0 <= i < N.
 std::pair<int, int> parse_shard(const std::string& text) {
   int i = -1, n = 0;
   char end = 0;
   if (std::sscanf(text.c_str(), "%d/%d%c", &i, &n, &end) != 2 || n < 1 || i < 0 || i >= n)
-    throw std::runtime_error("--shard: '" + text + "' is not i/N with 0 <= i < N");
+    throw Error(ErrorCode::invalid_argument, "--shard",
+                "'" + text + "' is not i/N with 0 <= i < N");
   return {i, n};
 }
 
@@ -69,7 +70,7 @@ void add_precompute_commands(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "precompute", "Pre-render every model's grid, build the embedding and the conversion fits");
   auto profile = std::make_shared<std::string>("default");
-  auto scene = std::make_shared<SceneOptions>();
+  auto setup = std::make_shared<RenderSetup>();
   auto out = std::make_shared<std::string>();
   auto resume = std::make_shared<bool>(false);
   auto threads = std::make_shared<int>(0);
@@ -77,7 +78,7 @@ void add_precompute_commands(CLI::App& app) {
   cmd->add_option("--profile", *profile, "Grid density: smoke, test, default or paper")
       ->capture_default_str()
       ->check(CLI::IsMember(profile_names()));
-  add_scene_options(*cmd, *scene);
+  add_render_setup_options(*cmd, *setup);
   cmd->get_option("--res")->default_str("the profile's");
   cmd->add_option("--out,-o", *out, "Database (or shard) directory to create (must not exist)");
   cmd->add_flag("--resume", *resume,
@@ -89,13 +90,13 @@ void add_precompute_commands(CLI::App& app) {
   add_merge_command(*cmd);
   cmd->callback([=] {
     if (!cmd->get_subcommands().empty()) return;  // `precompute merge` did the work
-    if (out->empty()) throw std::runtime_error("precompute: --out is required");
+    if (out->empty()) throw Error(ErrorCode::invalid_argument, "precompute: --out is required");
     PrecomputeRequest request{make_profile(*profile), *out, *resume, *threads, stderr_observer()};
     std::tie(request.shard_index, request.shard_count) = parse_shard(*shard);
     // --res overrides the profile's resolution only when given.
-    if (cmd->count("--res") > 0) request.profile.resolution = scene->resolution;
-    const EnvMap env = load_env(*scene);
-    const Scene geometry = load_scene(*scene);
+    if (cmd->count("--res") > 0) request.profile.resolution = setup->resolution;
+    const EnvMap env = load_env(*setup);
+    const Scene geometry = load_scene(*setup);
     precompute_database(request, env, geometry);
   });
 

@@ -14,7 +14,7 @@
 
 namespace brdfnav::cli {
 
-void add_scene_options(CLI::App& cmd, SceneOptions& o) {
+void add_render_setup_options(CLI::App& cmd, RenderSetup& o) {
   cmd.add_option("--env", o.env, "Lat-long HDR environment map (any format OpenImageIO reads)")
       ->capture_default_str();
   cmd.add_flag("--sanitize-env", o.sanitize_env, "Replace NaN/Inf texels by 0 instead of failing");
@@ -24,41 +24,41 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--scene", o.scene, "'sphere' or a triangle mesh (OBJ)")->capture_default_str();
 }
 
-Scene load_scene(const SceneOptions& o) {
+Scene load_scene(const RenderSetup& o) {
   return Scene::load(o.scene);
 }
 
 void check_output_file(const std::string& path, const std::string& option) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    throw std::runtime_error(option + " " + path + ": is a directory");
+    throw Error(ErrorCode::io, option + " " + path, "is a directory");
   const AtomicOutput probe(path);  // removes its temporary file
   if (!std::ofstream(probe.temp_path()))
-    throw std::runtime_error(option + " " + path + ": cannot create a file in its directory");
+    throw Error(ErrorCode::io, option + " " + path, "cannot create a file in its directory");
 }
 
-EnvMap load_env(const SceneOptions& o) {
+EnvMap load_env(const RenderSetup& o) {
   return EnvMap::load(o.env, EnvLoadOptions{o.sanitize_env});
 }
 
 void add_render_commands(CLI::App& app) {
   auto* render = app.add_subcommand(
       "render", "Render a material on the scene under the environment map (linear RGBA EXR)");
-  auto scene = std::make_shared<SceneOptions>();
+  auto setup = std::make_shared<RenderSetup>();
   auto material = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   render->add_option("--material,-m", *material, "YAML file or inline spec")->required();
-  add_scene_options(*render, *scene);
+  add_render_setup_options(*render, *setup);
   render->add_option("--out,-o", *out, "Output OpenEXR file (written atomically)")->required();
   render->callback([=] {
     check_exr_name(*out);
     check_output_file(*out, "--out");
     const Material m = load_material(*material);
-    const EnvMap env = load_env(*scene);
-    const Scene geometry = load_scene(*scene);
+    const EnvMap env = load_env(*setup);
+    const Scene geometry = load_scene(*setup);
     // Two passes, each with its own progress: the diffuse image, then the material's lobe (whose
     // first pass may filter the map around the mirror directions, with no progress of its own).
-    Renderer renderer(env, geometry, scene->resolution, {});
+    Renderer renderer(env, geometry, setup->resolution, {});
     renderer.set_progress(stderr_progress("render: diffuse pass"));
     renderer.diffuse();
     renderer.set_progress(

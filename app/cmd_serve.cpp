@@ -132,15 +132,17 @@ int bind(httplib::Server& server, const ServeOptions& o) {
   const int port = o.port == 0 ? server.bind_to_any_port(o.host)
                                : (server.bind_to_port(o.host, o.port) ? o.port : -1);
   if (port <= 0)
-    throw std::runtime_error("--port: cannot listen on " + o.host + ":" + std::to_string(o.port) +
-                             " (in use, or not an address of this machine)");
+    throw Error(ErrorCode::io, "--port",
+                "cannot listen on " + o.host + ":" + std::to_string(o.port) +
+                    " (in use, or not an address of this machine)");
   // Debian's compiled httplib listens with a backlog of 5: a burst of connections beyond it
   // while the accepting thread is busy has its SYNs dropped, and a client gives up after its
   // connect timeout (undici's 10 s; seen under ASan on a loaded machine). Listening again on
   // the bound socket raises the backlog.
   if (::listen(listening, SOMAXCONN) != 0)
-    throw std::runtime_error("--port: cannot listen on " + o.host + ":" + std::to_string(port) +
-                             ": " + std::strerror(errno));
+    throw Error(
+        ErrorCode::io, "--port",
+        "cannot listen on " + o.host + ":" + std::to_string(port) + ": " + std::strerror(errno));
   return port;
 }
 
@@ -174,11 +176,9 @@ void serve(const ServeOptions& o) {
   sigaction(SIGTERM, &action, nullptr);
 
   std::unique_ptr<const NavigatorApi> api;
-  try {
+  with_context("--db", [&] {
     api = std::make_unique<const NavigatorApi>(ApiOptions{o.db, o.resolution});
-  } catch (const std::exception& e) {
-    throw std::runtime_error(std::string("--db: ") + e.what());
-  }
+  });
   httplib::Server server;
   add_routes(server, *api);
   add_error_handling(server);

@@ -30,8 +30,8 @@ void check_writable(const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
-    throw std::runtime_error("--out " + dir.string() + ": cannot create the directory" +
-                             (ec ? ": " + ec.message() : ""));
+    throw Error(ErrorCode::io, "--out " + dir.string() + ": cannot create the directory" +
+                                   (ec ? ": " + ec.message() : ""));
   check_output_file((dir / "report.md").string(), "--out");
 }
 

@@ -23,19 +23,20 @@ void add_bench_commands(CLI::App& app);       // bench render, bench navigator
 void add_validate_command(CLI::App& app);     // validate
 void add_serve_command(CLI::App& app);        // serve
 
-// The options every command that renders shares: --env, --sanitize-env, --res, --scene.
-struct SceneOptions {
+// What a render is made from, the options every command that renders shares: the map (--env,
+// --sanitize-env), the resolution (--res) and the scene (--scene).
+struct RenderSetup {
   std::string env = kDefaultEnvPath;
   bool sanitize_env = false;
   int resolution = 320;
   std::string scene = "sphere";
 };
-void add_scene_options(CLI::App& cmd, SceneOptions& options);
+void add_render_setup_options(CLI::App& cmd, RenderSetup& options);
 
 // A navigation radius eps: a finite number of at least kMinRadius (brdfnav/navigator.h).
 const CLI::Validator& radius_validator();
 
-// "x,y,z" -> normalised vector; throws std::runtime_error naming `option` when it is not three
+// "x,y,z" -> normalised vector; throws Error(invalid_argument) naming `option` when it is not three
 // finite numbers or has zero length.
 Vec3 parse_direction(const std::string& text, const std::string& option);
 
@@ -43,7 +44,7 @@ Vec3 parse_direction(const std::string& text, const std::string& option);
 // directory is missing or not writable. std::runtime_error naming `option` and the path.
 void check_output_file(const std::string& path, const std::string& option);
 
-EnvMap load_env(const SceneOptions& options);
-Scene load_scene(const SceneOptions& options);
+EnvMap load_env(const RenderSetup& options);
+Scene load_scene(const RenderSetup& options);
 
 }  // namespace brdfnav::cli

@@ -118,8 +118,8 @@ const std::vector<std::string>& export_format_names() {
 ExportFormat parse_export_format(std::string_view name) {
   for (std::size_t i = 0; i < std::size(kFormats); ++i)
     if (kFormats[i].name == name) return static_cast<ExportFormat>(i);
-  throw std::invalid_argument("format: '" + std::string(name) +
-                              "' is not one of yaml, materialx, cycles");
+  throw Error(ErrorCode::invalid_argument, "format",
+              "'" + std::string(name) + "' is not one of yaml, materialx, cycles");
 }
 
 std::string_view export_content_type(ExportFormat format) {
@@ -159,9 +159,9 @@ RendererExport make_renderer_export(const Navigator& navigator, const Material& 
   if (chosen.model == ModelId::ggx && format != ExportFormat::materialx) return e;
   const EnvMap env = EnvMap::load(manifest.env_path, {}, [](const std::string&) {});
   if (env.pixel_hash() != manifest.env_hash)
-    throw std::runtime_error(manifest.env_path +
-                             ": not the environment map the database was built with (its pixels' "
-                             "SHA-1 differs from the manifest's)");
+    throw DatabaseError(manifest.env_path +
+                        ": not the environment map the database was built with (its pixels' "
+                        "SHA-1 differs from the manifest's)");
   const Scene scene = Scene::load(manifest.scene);
   Renderer renderer(env, scene, e.resolution);
   const Image ggx = renderer.render(e.ggx);

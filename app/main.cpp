@@ -3,6 +3,8 @@
 // that fails. Commands that write files write them atomically.
 #include "commands.h"
 
+#include <brdfnav/core/error.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -51,12 +53,36 @@ int usage_error(const std::string& message) {
   return 2;
 }
 
+// The exit status of a failure, by its kind; the help's footer lists them (kExitStatuses).
+int exit_status(brdfnav::ErrorCode code) {
+  using brdfnav::ErrorCode;
+  switch (code) {
+    case ErrorCode::invalid_argument:
+      return 2;  // as a command line that does not parse
+    case ErrorCode::parse:
+      return 3;
+    case ErrorCode::io:
+      return 4;
+    case ErrorCode::database:
+      return 5;
+    case ErrorCode::internal:
+      return 1;
+  }
+  return 1;
+}
+
+constexpr const char* kExitStatuses =
+    "Exit status: 0 done; 1 an internal failure; 2 a wrong command line or argument; 3 a "
+    "malformed material, spec or profile; 4 a file that cannot be read or written; 5 a database "
+    "that is missing, corrupt or not the one its files name.";
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"brdfnav: image-driven navigation of analytic BRDF models", "brdfnav"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Help for every command");
+  app.footer(kExitStatuses);
   brdfnav::cli::add_eval_commands(app);
   brdfnav::cli::add_demo_command(app);
   brdfnav::cli::add_render_commands(app);
@@ -73,6 +99,11 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --help-all
     if (argc < 2) return usage_error("a command is required (brdfnav --help lists them)");
     return usage_error(e.what());
+  } catch (const brdfnav::Error& e) {
+    const int status = exit_status(e.code());
+    if (status == 2) return usage_error(e.what());
+    std::fprintf(stderr, "brdfnav: error: %s\n", e.what());
+    return status;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "brdfnav: error: %s\n", e.what());
     return 1;

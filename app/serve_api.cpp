@@ -28,17 +28,17 @@ namespace {
 
 using nlohmann::json;
 
-// The radius slider's range and start, in the metric's units (cube-root RMS): from just above
-// the embedding's noise to about the distance between a matte and a glossy material.
-constexpr double kRadiusMin = 0.002, kRadiusMax = 0.2, kRadiusStart = 0.03;
+// The page's radius slider: its range and start, in the metric's units (cube-root RMS), from
+// where a step starts to show to about the distance between a matte and a glossy material. The
+// navigator itself takes radii down to kMinRadius (the embedding's noise).
+constexpr double kSliderMin = 0.002, kSliderMax = 0.2, kSliderStart = 0.03;
 constexpr int kMaxClusters = 32;
 
-// A request the API cannot answer; the message starts with the field at fault.
-class RequestError : public std::runtime_error {
- public:
-  RequestError(const std::string& field, const std::string& what)
-      : std::runtime_error(field + ": " + what) {}
-};
+// A request the API cannot answer: the client's mistake, its message starting with the field at
+// fault.
+Error request_error(const std::string& field, const std::string& what) {
+  return Error(ErrorCode::invalid_argument, field, what);
+}
 
 // Invalid UTF-8, which an uploaded file may carry into a message or a name, becomes U+FFFD
 // rather than an exception.
@@ -69,12 +69,12 @@ json parse_body(std::string_view body, const std::vector<std::string>& allowed) 
   try {
     request = json::parse(body);
   } catch (const json::exception& e) {  // parse_error, and out_of_range for 1e999
-    throw RequestError("body", std::string("malformed JSON: ") + e.what());
+    throw request_error("body", std::string("malformed JSON: ") + e.what());
   }
-  if (!request.is_object()) throw RequestError("body", "expected a JSON object");
+  if (!request.is_object()) throw request_error("body", "expected a JSON object");
   for (const auto& [key, value] : request.items())
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-      throw RequestError(cut(key), "unknown field (expected one of: " + join(allowed) + ")");
+      throw request_error(cut(key), "unknown field (expected one of: " + join(allowed) + ")");
   return request;
 }
 
@@ -96,22 +96,22 @@ std::string shown(const json& value) {
 
 const json& require(const json& request, const std::string& field) {
   const auto it = request.find(field);
-  if (it == request.end()) throw RequestError(field, "missing");
+  if (it == request.end()) throw request_error(field, "missing");
   return *it;
 }
 
 std::optional<std::string> optional_string(const json& request, const std::string& field) {
   const auto it = request.find(field);
   if (it == request.end()) return std::nullopt;
-  if (!it->is_string()) throw RequestError(field, "expected a string, got " + shown(*it));
+  if (!it->is_string()) throw request_error(field, "expected a string, got " + shown(*it));
   return it->get<std::string>();
 }
 
 // Every query needs the material's model in the database.
 Material check_held(const Database& db, Material m) {
   if (!db.embedding(m.model))
-    throw RequestError("material.model", "the database holds no model '" +
-                                             std::string(model_info(m.model).name) + "'");
+    throw request_error("material.model", "the database holds no model '" +
+                                              std::string(model_info(m.model).name) + "'");
   return m;
 }
 
@@ -133,19 +133,20 @@ const std::string* overlong_key(const json& value) {
 // as it is, with the same checks and messages ("material:1: params.n: ..."), once it holds no
 // key too long for YAML (no material key is).
 Material read_material(const Database& db, const json& value) {
-  if (!value.is_object()) throw RequestError("material", "expected an object, got " + shown(value));
-  if (deeper_than(value, 3)) throw RequestError("material", "nested too deeply");
+  if (!value.is_object())
+    throw request_error("material", "expected an object, got " + shown(value));
+  if (deeper_than(value, 3)) throw request_error("material", "nested too deeply");
   if (const std::string* key = overlong_key(value))
-    throw RequestError("material", "unknown key of " + std::to_string(key->size()) + " bytes " +
-                                       shown(json(*key)));
+    throw request_error("material", "unknown key of " + std::to_string(key->size()) + " bytes " +
+                                        shown(json(*key)));
   return check_held(db, material_from_node(YAML::Load(value.dump()), "material", false));
 }
 
 double read_radius(const json& value) {
-  if (!value.is_number()) throw RequestError("radius", "expected a number, got " + shown(value));
+  if (!value.is_number()) throw request_error("radius", "expected a number, got " + shown(value));
   const double radius = value.get<double>();
   if (!valid_radius(radius))
-    throw RequestError("radius", radius_requirement() + ", got " + shown(value));
+    throw request_error("radius", radius_requirement() + ", got " + shown(value));
   return radius;
 }
 
@@ -154,15 +155,15 @@ Tab read_tab(const json& value) {
     if (const std::optional<Tab> tab = find_tab(value.get<std::string>())) return *tab;
   std::vector<std::string> names;
   for (Tab t : kTabs) names.emplace_back(tab_name(t));
-  throw RequestError("tab",
-                     "unknown tab " + shown(value) + " (expected one of: " + join(names) + ")");
+  throw request_error("tab",
+                      "unknown tab " + shown(value) + " (expected one of: " + join(names) + ")");
 }
 
 // An optional true/false field, false when absent.
 bool read_flag(const json& request, const char* key) {
   const auto it = request.find(key);
   if (it == request.end()) return false;
-  if (!it->is_boolean()) throw RequestError(key, "expected true or false, got " + shown(*it));
+  if (!it->is_boolean()) throw request_error(key, "expected true or false, got " + shown(*it));
   return it->get<bool>();
 }
 
@@ -172,10 +173,10 @@ std::optional<RingId> read_ring(const json& request) {
   const auto it = request.find("ring");
   if (it == request.end()) return std::nullopt;
   const auto bad = [&] {
-    return RequestError("ring",
-                        "expected {\"client\": a string of 1 to 64 letters, digits, '-' "
-                        "or '_', \"id\": an integer of at least 0}, got " +
-                            shown(*it));
+    return request_error("ring",
+                         "expected {\"client\": a string of 1 to 64 letters, digits, '-' "
+                         "or '_', \"id\": an integer of at least 0}, got " +
+                             shown(*it));
   };
   if (!it->is_object() || it->size() != 2 || !it->contains("client") || !it->contains("id"))
     throw bad();
@@ -208,14 +209,14 @@ int read_size(const json& request, const std::vector<int>& sizes) {
     return it->get<int>();
   std::vector<std::string> names;
   for (int s : sizes) names.push_back(std::to_string(s));
-  throw RequestError("size", "expected one of " + join(names) + ", got " + shown(*it));
+  throw request_error("size", "expected one of " + join(names) + ", got " + shown(*it));
 }
 
 int read_clusters(const json& request) {
   const auto it = request.find("k");
-  if (it == request.end()) return 8;
+  if (it == request.end()) return kDefaultClusters;
   if (!it->is_number_integer() || *it < 1 || *it > kMaxClusters)
-    throw RequestError(
+    throw request_error(
         "k", "expected an integer in [1, " + std::to_string(kMaxClusters) + "], got " + shown(*it));
   return it->get<int>();
 }
@@ -254,13 +255,13 @@ std::pair<std::string, std::string> read_display_view(const ocio::ColorPipeline&
   try {
     colour.views(display);
   } catch (const ocio::ColorError& e) {
-    throw RequestError("display", e.what());
+    throw request_error("display", e.what());
   }
   const std::string view = optional_string(request, "view").value_or(colour.default_view(display));
   try {
     colour.validate(display, view);
   } catch (const ocio::ColorError& e) {
-    throw RequestError("view", e.what());
+    throw request_error("view", e.what());
   }
   return {display, view};
 }
@@ -312,17 +313,28 @@ constexpr Route kRoutes[] = {{"/api/info", false},
                              {"/api/export", true},
                              {"/api/import", true}};
 
-// Runs `body`, turning the client's mistakes into 400 and anything else into 500.
+// The HTTP status of an Error: the client's mistakes are 400, the server's failures 500.
+int http_status(ErrorCode code) {
+  switch (code) {
+    case ErrorCode::invalid_argument:
+    case ErrorCode::parse:
+      return 400;
+    case ErrorCode::io:
+    case ErrorCode::database:
+    case ErrorCode::internal:
+      return 500;
+  }
+  return 500;
+}
+
+// Runs `body`, answering an error with its status: http_status() of an Error, 409 for work of a
+// ring the page has left, 500 for anything else.
 template <typename Body>
 ApiResponse answer(Body&& body) {
   try {
     return body();
-  } catch (const RequestError& e) {
-    return error_response(400, e.what());
-  } catch (const MaterialError& e) {
-    return error_response(400, e.what());
-  } catch (const NavigatorError& e) {
-    return error_response(400, e.what());
+  } catch (const Error& e) {
+    return error_response(http_status(e.code()), e.what());
   } catch (const RingLeft& e) {
     return error_response(409, e.what());
   } catch (const std::exception& e) {
@@ -385,7 +397,7 @@ ApiResponse NavigatorApi::info() const {
          {"tabs", tabs},
          {"displays", displays},
          {"colour_config", colour_.describe()},
-         {"radius", {{"min", kRadiusMin}, {"max", kRadiusMax}, {"start", kRadiusStart}}},
+         {"radius", {{"min", kSliderMin}, {"max", kSliderMax}, {"start", kSliderStart}}},
          {"start", material_json(navigator_.start_material())},
          {"thumbnail_resolution", thumbnails_.resolution()},
          {"thumbnail_sizes", sizes_},
@@ -422,7 +434,7 @@ ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
     const bool quick = read_flag(request, "preview");
     const int size = read_size(request, sizes_);
     if (quick && size != thumbnails_.resolution())
-      throw RequestError(
+      throw request_error(
           "size", "a preview is drawn at " + std::to_string(thumbnails_.resolution()) + " px only");
     const std::function<void()> before_render = enter_ring(rings_, request);
     const std::shared_ptr<const Image> rendered =
@@ -441,9 +453,9 @@ ApiResponse NavigatorApi::export_material(std::string_view body) const {
     if (const std::optional<std::string> name = optional_string(request, "format")) {
       try {
         format = parse_export_format(*name);
-      } catch (const std::invalid_argument&) {
-        throw RequestError("format", "expected one of yaml, materialx, cycles, got " +
-                                         shown(request.at("format")));
+      } catch (const Error&) {  // its own message quotes the name unescaped
+        throw request_error("format", "expected one of yaml, materialx, cycles, got " +
+                                          shown(request.at("format")));
       }
     }
     // The renderers' formats render the material and its ggx form to state their distance: at

@@ -1,5 +1,7 @@
 #include <brdfnav/core/atomic_file.h>
 
+#include <brdfnav/core/error.h>
+
 #include <fcntl.h>
 #include <unistd.h>
 #include <atomic>
@@ -34,14 +36,14 @@ AtomicOutput::~AtomicOutput() {
 void AtomicOutput::commit() {
   std::error_code ec;
   std::filesystem::rename(temp_, target_, ec);
-  if (ec) throw std::runtime_error(target_.string() + ": cannot write: " + ec.message());
+  if (ec) throw Error(ErrorCode::io, target_.string(), "cannot write: " + ec.message());
   committed_ = true;
 }
 
 namespace {
 
 [[noreturn]] void fail(const std::filesystem::path& target, const std::string& why) {
-  throw std::runtime_error(target.string() + ": cannot write: " + why);
+  throw Error(ErrorCode::io, target.string(), "cannot write: " + why);
 }
 
 void write_all(int fd, std::string_view contents, const std::filesystem::path& target) {
@@ -104,12 +106,12 @@ void write_file_atomic(const std::filesystem::path& target, std::string_view con
 std::string read_file(const std::filesystem::path& path) {
   const std::string name = path.string();
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw std::runtime_error(name + ": is a directory");
+  if (std::filesystem::is_directory(path, ec)) throw Error(ErrorCode::io, name, "is a directory");
   std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::runtime_error(name + ": cannot open: " + std::strerror(errno));
+  if (!file) throw Error(ErrorCode::io, name, std::string("cannot open: ") + std::strerror(errno));
   std::ostringstream text;
   text << file.rdbuf();
-  if (file.bad()) throw std::runtime_error(name + ": cannot read");
+  if (file.bad()) throw Error(ErrorCode::io, name, "cannot read");
   return text.str();
 }
 

@@ -128,8 +128,9 @@ void validate(const Material& m) {
 void require_render_colorspace(const Material& m) {
   if (m.colorspace != kDefaultColorspace)
     throw MaterialError("colorspace '" + m.colorspace + "': images and distances are computed in " +
-                        std::string(kDefaultColorspace) +
-                        " only (give rho_d and rho_s in it; colours are not converted)");
+                            std::string(kDefaultColorspace) +
+                            " only (give rho_d and rho_s in it; colours are not converted)",
+                        ErrorCode::invalid_argument);
 }
 
 Closure make_closure(const Material& m) {

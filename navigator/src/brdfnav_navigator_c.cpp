@@ -1,5 +1,5 @@
 // The C ABI of brdfnav_navigator.h over the C++ navigator. Every entry point runs its body inside
-// guarded() (brdfnav/io/c_abi.h); the navigator's own errors are translated at this edge.
+// guarded() (brdfnav/io/c_abi.h), which reports any brdfnav::Error by its code.
 #include <brdfnav/brdfnav_navigator.h>
 
 #include <brdfnav/io/c_abi.h>
@@ -54,18 +54,6 @@ namespace {
 using namespace brdfnav;
 using namespace brdfnav::abi;
 
-// Runs `body`, turning the navigator's and the database's errors into the ABI's statuses.
-template <typename Body>
-auto translated(Body&& body) -> decltype(body()) {
-  try {
-    return body();
-  } catch (const DatabaseError& e) {
-    throw AbiError(BRDFNAV_ERROR_DATABASE, e.what());
-  } catch (const NavigatorError& e) {
-    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, e.what());
-  }
-}
-
 static_assert(BRDFNAV_TAB_LOBE == int(Tab::lobe) && BRDFNAV_TAB_DIFFUSE == int(Tab::diffuse) &&
               BRDFNAV_TAB_SPECULAR == int(Tab::specular) &&
               BRDFNAV_TAB_MODELS == int(Tab::models) && BRDFNAV_TAB_GALLERY == int(Tab::gallery));
@@ -77,8 +65,8 @@ Tab tab_of(const brdfnav_tab& tab) {
   static_assert(sizeof value == sizeof tab);
   std::memcpy(&value, &tab, sizeof value);
   if (value < 0 || value >= static_cast<int>(std::size(kTabs)))
-    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT,
-                   "tab " + std::to_string(value) + " is not a brdfnav_tab");
+    throw Error(ErrorCode::invalid_argument,
+                "tab " + std::to_string(value) + " is not a brdfnav_tab");
   return kTabs[value];
 }
 
@@ -100,65 +88,45 @@ brdfnav_status list_query(const brdfnav_navigator* navigator, brdfnav_neighbors*
                           Query&& query) {
   return create_into(out, [&] {
     require(navigator, "navigator");
-    return new_list(translated([&] { return query(navigator->navigator); }));
+    return new_list(query(navigator->navigator));
   });
 }
 
 using Colour = brdfnav_navigator::Colour;
 
 // The navigator's display thumbnails, made on first use. A config that does not load is the
-// host's environment ($OCIO), not a bad argument: BRDFNAV_ERROR_IO, and the next call tries again.
+// host's environment ($OCIO), not a bad argument (ColorError, ErrorCode::io: BRDFNAV_ERROR_IO),
+// and the next call tries again.
 const Colour& colour_of(const brdfnav_navigator* navigator) {
   require(navigator, "navigator");
   std::lock_guard lock(navigator->colour_mutex);
-  if (!navigator->colour) {
-    try {
-      navigator->colour = std::make_unique<const Colour>(navigator->navigator.database());
-    } catch (const ocio::ColorError& e) {
-      throw AbiError(BRDFNAV_ERROR_IO, e.what());
-    }
-  }
+  if (!navigator->colour)
+    navigator->colour = std::make_unique<const Colour>(navigator->navigator.database());
   return *navigator->colour;
-}
-
-// Runs a check of the pipeline's whose ColorError (an unknown display or view, named with the
-// valid ones) is the caller's bad argument.
-template <typename Check>
-void colour_argument(Check&& check) {
-  try {
-    check();
-  } catch (const ocio::ColorError& e) {
-    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, e.what());
-  }
 }
 
 // The views of `display`, one of the config's.
 const std::vector<std::string>& views_of(const Colour& colour, const char* display) {
   require(display, "display");
-  colour_argument([&] { colour.display.pipeline().views(display); });
+  colour.display.pipeline().views(display);  // an unknown display: ErrorCode::invalid_argument
   const auto it = std::find(colour.displays.begin(), colour.displays.end(), display);
   return colour.views[static_cast<std::size_t>(it - colour.displays.begin())];
 }
 
-// AbiError(INVALID_ARGUMENT) unless `index` < `count`; `what` names the list.
+// Error(invalid_argument) unless `index` < `count`; `what` names the list.
 void require_index(std::size_t index, std::size_t count, const std::string& what) {
   if (index >= count)
-    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, what + " index " + std::to_string(index) +
-                                                       " is outside [0, " + std::to_string(count) +
-                                                       ")");
+    throw Error(ErrorCode::invalid_argument, what + " index " + std::to_string(index) +
+                                                 " is outside [0, " + std::to_string(count) + ")");
 }
 
 // A material the thumbnails can show: in the database's colour space, of a model it holds (as
 // the navigator's queries require).
 void check_thumbnail_material(const Database& database, const Material& m) {
-  try {
-    require_render_colorspace(m);
-  } catch (const MaterialError& e) {
-    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, std::string("material: ") + e.what());
-  }
+  require_render_colorspace(m);
   if (!database.embedding(m.model))
-    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, database.dir().string() + ": holds no model '" +
-                                                       std::string(model_info(m.model).name) + "'");
+    throw Error(ErrorCode::invalid_argument, database.dir().string() + ": holds no model '" +
+                                                 std::string(model_info(m.model).name) + "'");
 }
 
 }  // namespace
@@ -176,7 +144,7 @@ const char* brdfnav_navigator_geterror(void) {
 brdfnav_status brdfnav_navigator_open(const char* database_dir, brdfnav_navigator** out) {
   return create_into(out, [&] {
     require(database_dir, "database_dir");
-    return translated([&] { return new brdfnav_navigator(Navigator::open(database_dir)); });
+    return new brdfnav_navigator(Navigator::open(database_dir));
   });
 }
 
@@ -221,9 +189,9 @@ brdfnav_status brdfnav_neighbors_get(const brdfnav_neighbors* list, size_t index
   return guarded([&] {
     require(list, "list");
     if (index >= list->entries.size())
-      throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT,
-                     "neighbour index " + std::to_string(index) + " is outside [0, " +
-                         std::to_string(list->entries.size()) + ")");
+      throw Error(ErrorCode::invalid_argument, "neighbour index " + std::to_string(index) +
+                                                   " is outside [0, " +
+                                                   std::to_string(list->entries.size()) + ")");
     require(out, "out");
     const brdfnav_neighbors::Entry& e = list->entries[index];
     const Neighbor& n = e.neighbor;
@@ -315,24 +283,19 @@ brdfnav_status brdfnav_navigator_thumbnail(const brdfnav_navigator* navigator,
     const Material m = material_from_struct(*material);
     check_thumbnail_material(navigator->navigator.database(), m);
     const Colour& colour = colour_of(navigator);
-    colour_argument([&] { colour.display.pipeline().validate(display, view); });
+    colour.display.pipeline().validate(display, view);
     const int size = colour.display.resolution();
     const std::size_t needed = std::size_t(size) * std::size_t(size) * 4;
     if (capacity < needed)
-      throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT,
-                     "capacity: " + std::to_string(capacity) + " bytes, but the thumbnail needs " +
-                         std::to_string(size) + " x " + std::to_string(size) +
-                         " x 4 = " + std::to_string(needed));
-    const ocio::Thumbnail t = translated([&] {
-      try {
-        return colour.display.render(m, display, view);
-      } catch (const ocio::ColorError& e) {  // the config's processor, not the arguments
-        throw AbiError(BRDFNAV_ERROR_IO, e.what());
-      }
-    });
+      throw Error(ErrorCode::invalid_argument,
+                  "capacity: " + std::to_string(capacity) + " bytes, but the thumbnail needs " +
+                      std::to_string(size) + " x " + std::to_string(size) +
+                      " x 4 = " + std::to_string(needed));
+    // A processor the config cannot build is ErrorCode::io (the host's environment).
+    const ocio::Thumbnail t = colour.display.render(m, display, view);
     if (t.rgba.size() != needed)
-      throw std::logic_error("a thumbnail of " + std::to_string(t.rgba.size()) + " bytes, not " +
-                             std::to_string(needed));
+      throw Error(ErrorCode::internal, "a thumbnail of " + std::to_string(t.rgba.size()) +
+                                           " bytes, not " + std::to_string(needed));
     std::memcpy(rgba, t.rgba.data(), needed);
     *width = t.width;
     *height = t.height;

@@ -79,7 +79,7 @@ YAML::Node load_yaml(const std::string& file) {
   std::string text;
   try {
     text = read_file(file);
-  } catch (const std::runtime_error& e) {
+  } catch (const Error& e) {
     throw DatabaseError(e.what());
   }
   return YAML::Load(text);

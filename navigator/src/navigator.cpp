@@ -62,16 +62,6 @@ void check_query(double radius, int clusters) {
     throw NavigatorError("clusters: must be at least 1, got " + std::to_string(clusters));
 }
 
-// The database's images and embedding are in lin_rec709 (require_render_colorspace); a query in
-// another space is a bad argument of the navigator's, like a bad radius.
-void check_colorspace(const Material& m) {
-  try {
-    require_render_colorspace(m);
-  } catch (const MaterialError& e) {
-    throw NavigatorError(std::string("material: ") + e.what());
-  }
-}
-
 // A material of `model` at the gallery's grey with rho_s = `rho_s`.
 Material grey(Material m, double rho_s) {
   m.rho_d = Rgb::Constant(kGalleryRhoD);
@@ -152,7 +142,7 @@ Material Navigator::start_material() const {
 }
 
 Eigen::VectorXf Navigator::embed(const Material& m) const {
-  check_colorspace(m);
+  require_render_colorspace(m);
   return embedding_of(m.model).embed(m);
 }
 
@@ -191,7 +181,7 @@ Material Navigator::convert(const Material& m, ModelId to) const {
 
 std::vector<Equivalent> Navigator::equivalents(const Material& m) const {
   validate(m);
-  check_colorspace(m);
+  require_render_colorspace(m);
   std::vector<Equivalent> out;
   for (const ProfileGrid& g : database_.manifest().grids) {
     if (g.model == m.model || !database_.conversion(m.model, g.model)) continue;
@@ -205,7 +195,7 @@ std::vector<Equivalent> Navigator::equivalents(const Material& m) const {
 std::vector<Neighbor> Navigator::neighbors(const Material& current, double radius, Tab tab,
                                            int clusters, const ExactSteps* exact) const {
   validate(current);
-  check_colorspace(current);
+  require_render_colorspace(current);
   check_query(radius, clusters);
   if (exact && !exact->distance) throw NavigatorError("exact steps: no distance given");
   std::vector<Neighbor> offers = tab_offers(current, radius, tab, clusters, exact);

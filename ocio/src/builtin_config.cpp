@@ -56,7 +56,7 @@ void add_scene_spaces(OCIO::Config& config) {
   config.addColorSpace(cg);
 
   // Linear Rec.709 reaches AP0 through AP1: the registry has AP1 -> Rec.709 but no Rec.709 -> AP0.
-  auto rec709 = colorspace(OCIO::REFERENCE_SPACE_SCENE, kMaterialColorSpace, "Scene-linear",
+  auto rec709 = colorspace(OCIO::REFERENCE_SPACE_SCENE, kDefaultColorspace, "Scene-linear",
                            "scene-linear", {"Linear Rec.709 (sRGB)", "lin_srgb"});
   auto to_ap0 = OCIO::GroupTransform::Create();
   to_ap0->appendTransform(builtin(kAp1ToRec709, OCIO::TRANSFORM_DIR_INVERSE));
@@ -109,8 +109,8 @@ OCIO::ConstConfigRcPtr make_builtin_config() {
   add_display_spaces(*config);
   add_view_transforms(*config);
   add_displays(*config);
-  config->setRole(OCIO::ROLE_DEFAULT, kMaterialColorSpace);
-  config->setRole(OCIO::ROLE_SCENE_LINEAR, kMaterialColorSpace);
+  config->setRole(OCIO::ROLE_DEFAULT, kDefaultColorspace);
+  config->setRole(OCIO::ROLE_SCENE_LINEAR, kDefaultColorspace);
   config->setRole(OCIO::ROLE_INTERCHANGE_SCENE, kAces2065);
   config->setRole(OCIO::ROLE_INTERCHANGE_DISPLAY, kXyzD65);
   config->validate();

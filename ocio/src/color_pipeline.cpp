@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <iostream>
 #include <map>
 #include <mutex>
 #include <utility>
@@ -15,10 +14,6 @@
 namespace brdfnav::ocio {
 
 namespace OCIO = OCIO_NAMESPACE;
-
-void stderr_warning(const std::string& message) {
-  std::cerr << "brdfnav: warning: " << message << '\n';
-}
 
 namespace {
 
@@ -43,7 +38,8 @@ OCIO::ConstConfigRcPtr load_config(const std::string& path, bool from_env) {
     return config;
   } catch (const OCIO::Exception& e) {
     throw ColorError("cannot load OCIO config '" + path + "'" + (from_env ? " (from $OCIO)" : "") +
-                     ": " + e.what());
+                         ": " + e.what(),
+                     ErrorCode::io);
   }
 }
 
@@ -66,8 +62,9 @@ std::string resolve_source(const OCIO::Config& config, const PipelineOptions& op
     return cs->getName();
   }
   throw ColorError("OCIO config has no colour space '" + options.source +
-                   "' and no scene_linear or default role; its colour spaces: " +
-                   join(colorspace_names(config)));
+                       "' and no scene_linear or default role; its colour spaces: " +
+                       join(colorspace_names(config)),
+                   ErrorCode::io);
 }
 
 // Written so that NaN fails the comparison and becomes 0.
@@ -87,7 +84,7 @@ struct ColorPipeline::Impl {
 };
 
 ColorPipeline::ColorPipeline(PipelineOptions options) : impl_(std::make_unique<Impl>()) {
-  if (!options.warn) options.warn = stderr_warning;
+  if (!options.warn) options.warn = warn_to_stderr;
   const std::string path = config_path(options);
   impl_->config = load_config(path, options.config_path.empty());
   impl_->config_source = path.empty() ? kBuiltinConfigName : path;
@@ -166,7 +163,8 @@ std::shared_ptr<const OCIO::CPUProcessor> ColorPipeline::processor(const std::st
       cached = impl_->config->getProcessor(transform)->getDefaultCPUProcessor();
     } catch (const OCIO::Exception& e) {
       throw ColorError("cannot build the OCIO processor '" + impl_->source + "' -> display '" +
-                       display + "', view '" + view + "': " + e.what());
+                           display + "', view '" + view + "': " + e.what(),
+                       ErrorCode::io);
     }
   }
   return cached;

@@ -22,9 +22,9 @@ using namespace brdfnav::abi;
 
 const ModelInfo& model_at(int model) {
   if (model < 0 || model >= kModelCount)
-    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, "model index " + std::to_string(model) +
-                                                       " is outside [0, " +
-                                                       std::to_string(kModelCount) + ")");
+    throw Error(ErrorCode::invalid_argument, "model index " + std::to_string(model) +
+                                                 " is outside [0, " + std::to_string(kModelCount) +
+                                                 ")");
   return brdfnav::models()[model];
 }
 
@@ -38,17 +38,16 @@ Vec3 direction(const double* w, const char* name) {
   require(w, name);
   const Vec3 v(w[0], w[1], w[2]);
   if (!v.allFinite())
-    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, std::string(name) + " is not finite");
+    throw Error(ErrorCode::invalid_argument, std::string(name) + " is not finite");
   const std::optional<Vec3> unit = unit_direction(v);
-  if (!unit)
-    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, std::string(name) + " is the zero vector");
+  if (!unit) throw Error(ErrorCode::invalid_argument, std::string(name) + " is the zero vector");
   return *unit;
 }
 
 double unit_random(double u, const char* name) {
   if (!(u >= 0 && u < 1))
-    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT,
-                   std::string(name) + " = " + std::to_string(u) + " is outside [0, 1)");
+    throw Error(ErrorCode::invalid_argument,
+                std::string(name) + " = " + std::to_string(u) + " is outside [0, 1)");
   return u;
 }
 
@@ -84,7 +83,7 @@ brdfnav_status brdfnav_find_model(const char* name, int* model) {
     require(model, "model");
     const ModelInfo* info = brdfnav::find_model(name);
     if (!info)
-      throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, "unknown model '" + std::string(name) + "'");
+      throw Error(ErrorCode::invalid_argument, "unknown model '" + std::string(name) + "'");
     *model = static_cast<int>(info->id);
   });
 }
@@ -93,10 +92,10 @@ brdfnav_status brdfnav_get_param(int model, int param, brdfnav_param_desc* out) 
   return guarded([&] {
     const ModelInfo& info = model_at(model);
     if (param < 0 || param >= static_cast<int>(info.params.size()))
-      throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT,
-                     "parameter index " + std::to_string(param) + " is outside [0, " +
-                         std::to_string(info.params.size()) + ") for model '" +
-                         std::string(info.name) + "'");
+      throw Error(ErrorCode::invalid_argument, "parameter index " + std::to_string(param) +
+                                                   " is outside [0, " +
+                                                   std::to_string(info.params.size()) +
+                                                   ") for model '" + std::string(info.name) + "'");
     require(out, "out");
     const ParamSpec& p = info.params[param];
     const auto& s = CStrings::get().models[model].params[param];

@@ -35,15 +35,27 @@ CStrings build_strings() {
 
 }  // namespace
 
+brdfnav_status status_of(ErrorCode code) noexcept {
+  switch (code) {
+    case ErrorCode::invalid_argument:
+      return BRDFNAV_ERROR_INVALID_ARGUMENT;
+    case ErrorCode::parse:
+      return BRDFNAV_ERROR_PARSE;
+    case ErrorCode::io:
+      return BRDFNAV_ERROR_IO;
+    case ErrorCode::database:
+      return BRDFNAV_ERROR_DATABASE;
+    case ErrorCode::internal:
+      return BRDFNAV_ERROR_INTERNAL;
+  }
+  return BRDFNAV_ERROR_INTERNAL;
+}
+
 brdfnav_status fail_current() noexcept {
   try {
     throw;
-  } catch (const AbiError& e) {
-    return fail(e.status(), e.what());
-  } catch (const MaterialFileError& e) {
-    return fail(BRDFNAV_ERROR_IO, e.what());
-  } catch (const MaterialError& e) {
-    return fail(BRDFNAV_ERROR_PARSE, e.what());
+  } catch (const Error& e) {
+    return fail(status_of(e.code()), e.what());
   } catch (const std::bad_alloc&) {
     return fail(BRDFNAV_ERROR_OUT_OF_MEMORY, "out of memory");
   } catch (const std::exception& e) {
@@ -58,7 +70,7 @@ const char* last_error() noexcept {
 }
 
 void require(const void* pointer, const char* name) {
-  if (!pointer) throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, std::string(name) + " is NULL");
+  if (!pointer) throw Error(ErrorCode::invalid_argument, std::string(name) + " is NULL");
 }
 
 const CStrings& CStrings::get() {
@@ -70,8 +82,8 @@ Material material_from_struct(const brdfnav_material& desc) {
   require(desc.model, "material->model");
   const ModelInfo* info = find_model(desc.model);
   if (!info)
-    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT,
-                   "material->model: unknown model '" + std::string(desc.model) + "'");
+    throw Error(ErrorCode::invalid_argument,
+                "material->model: unknown model '" + std::string(desc.model) + "'");
   Material m = default_material(info->id);
   if (desc.param_count > 0) require(desc.params, "material->params");
   std::vector<bool> given(info->params.size(), false);
@@ -80,10 +92,10 @@ Material material_from_struct(const brdfnav_material& desc) {
     require(p.name, "material->params[i].name");
     const int index = find_param(*info, p.name);
     if (index < 0 || given[index])
-      throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT,
-                     "material->params: parameter '" + std::string(p.name) +
-                         (index < 0 ? "' is not one of model '" + std::string(info->name) + "'"
-                                    : "' is given twice"));
+      throw Error(ErrorCode::invalid_argument,
+                  "material->params: parameter '" + std::string(p.name) +
+                      (index < 0 ? "' is not one of model '" + std::string(info->name) + "'"
+                                 : "' is given twice"));
     given[index] = true;
     m.params[index] = p.value;
   }
@@ -93,7 +105,7 @@ Material material_from_struct(const brdfnav_material& desc) {
   try {
     validate(m);
   } catch (const MaterialError& e) {
-    throw AbiError(BRDFNAV_ERROR_INVALID_ARGUMENT, std::string("material: ") + e.what());
+    throw Error(ErrorCode::invalid_argument, "material", e.what());
   }
   return m;
 }

@@ -252,8 +252,8 @@ void check_parser_progress(const std::string& text, std::string_view source) {
 std::string read_text(const std::filesystem::path& path) {
   try {
     return read_file(path);
-  } catch (const std::runtime_error& e) {
-    throw MaterialFileError(e.what());
+  } catch (const Error& e) {
+    throw MaterialError(e.what(), ErrorCode::io);
   }
 }
 
@@ -356,7 +356,7 @@ Material load_material(std::string_view path_or_spec) {
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".yaml" || extension == ".yml")
-    throw MaterialFileError(path.string() + ": no such material file");
+    throw MaterialError(path.string() + ": no such material file", ErrorCode::io);
   // Neither a spec ("model:key=value,...") nor a bare model name: a file name that was mistyped
   // or lacks its extension, which "unknown model" would not tell.
   const bool spec =
@@ -365,10 +365,11 @@ Material load_material(std::string_view path_or_spec) {
     std::string models;
     for (const ModelInfo& info : brdfnav::models())
       models += (models.empty() ? "" : ", ") + std::string(info.name);
-    throw MaterialFileError(path.string() +
+    throw MaterialError(path.string() +
                             ": no such material file, and not a model name or an inline spec "
                             "(MODEL:key=value,...; models: " +
-                            models + ")");
+                            models + ")",
+                        ErrorCode::io);
   }
   return parse_material_spec(path_or_spec);
 }

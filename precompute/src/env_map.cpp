@@ -75,10 +75,6 @@ std::size_t fix_texels(std::vector<float>& rgb, Bad bad, float replacement) {
 
 }  // namespace
 
-void warn_to_stderr(const std::string& line) {
-  std::fprintf(stderr, "brdfnav: warning: %s\n", line.c_str());
-}
-
 EnvMap EnvMap::load(const std::filesystem::path& path, const EnvLoadOptions& options,
                     const WarningSink& warn) {
   const std::string name = path.string();

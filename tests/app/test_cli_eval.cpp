@@ -81,9 +81,38 @@ TEST(CliEval, RejectsBadMaterials) {
         Case{"ward:rho_d=0.1/0.2", "expected one value or r/g/b"}, Case{"ward:rho_d=2", "rho_d"}}) {
     SCOPED_TRACE(c.spec);
     const auto r = run_cli(std::string("eval --material ") + c.spec + " --wi 0,0,1 --wo 0,0,1");
-    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.exit_code, 3);  // a malformed spec
     EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
   }
+}
+
+// Each kind of failure has its exit status, whichever layer failed, and the help lists them.
+TEST(CliHelp, ExitStatusSaysWhatKindOfFailure) {
+  const struct {
+    std::string args;
+    int status;
+    std::string phrase;
+  } cases[] = {
+      {"eval --material ward --wi 0,0,0 --wo 0,0,1", 2, "--wi: direction has zero length"},
+      {"eval --material ward:alpha_x=abc --wi 0,0,1 --wo 0,0,1", 3, "'abc' is not a number"},
+      {"eval --material /nonexistent/m.yaml --wi 0,0,1 --wo 0,0,1", 4, "no such material file"},
+      {"neighbors --db /nonexistent/brdfnav-db --material ward --radius 0.05", 5,
+       "--db: /nonexistent/brdfnav-db"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.args);
+    const auto r = run_cli(c.args);
+    EXPECT_EQ(r.exit_code, c.status) << r.err;
+    EXPECT_NE(r.err.find("brdfnav: error: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(c.phrase), std::string::npos) << r.err;
+    // Only a wrong command line points at the help.
+    EXPECT_EQ(r.err.find("Run 'brdfnav --help'") != std::string::npos, c.status == 2) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
+  const auto help = run_cli("--help");
+  EXPECT_NE(help.out.find("Exit status: 0 done; 1 an internal failure; 2 a wrong command line"),
+            std::string::npos)
+      << help.out;
 }
 
 TEST(CliHelp, EveryCommandHasHelp) {
@@ -117,7 +146,7 @@ TEST(CliHelp, UsageErrorsNameTheProblemAndExitWith2) {
   }
   // A material name that is no file, model or spec says so (it said "unknown model 'chosen'").
   const auto r = run_cli("eval --material chosen --wi 0,0,1 --wo 0,0,1");
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 4);  // a file that cannot be read
   EXPECT_NE(r.err.find("brdfnav: error: chosen: no such material file, and not a model name"),
             std::string::npos)
       << r.err;

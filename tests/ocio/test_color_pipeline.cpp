@@ -325,11 +325,5 @@ TEST(EnvConfig, RawConfigWarnsOnce) {
   EXPECT_THAT(warnings.seen[1], HasSubstr(file.string()));
 }
 
-TEST(Warnings, DefaultSinkWritesToStderr) {
-  ::testing::internal::CaptureStderr();
-  stderr_warning("something odd");
-  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "brdfnav: warning: something odd\n");
-}
-
 }  // namespace
 }  // namespace brdfnav::ocio

@@ -144,18 +144,26 @@ TEST_F(MaterialYamlFiles, LoadMaterialTellsFilesFromSpecs) {
   try {
     load_material(missing);
     FAIL() << "no error";
-  } catch (const MaterialFileError& e) {
+  } catch (const MaterialError& e) {
     EXPECT_THAT(e.what(), HasSubstr(missing));
+    EXPECT_EQ(e.code(), ErrorCode::io);
   }
-  EXPECT_THROW(read_material_yaml(dir_ / "missing.yml"), MaterialFileError);
-  EXPECT_THROW(read_material_yaml(dir_), MaterialFileError);
+  for (const auto& unreadable : {dir_ / "missing.yml", dir_}) {
+    try {
+      read_material_yaml(unreadable);
+      FAIL() << unreadable << ": no error";
+    } catch (const MaterialError& e) {
+      EXPECT_EQ(e.code(), ErrorCode::io) << e.what();
+    }
+  }
   // A name that is neither a file, a model nor a spec (a file name without its .yaml, a path) is
   // reported as the missing file it most likely is, with what would have been accepted.
   for (const std::string& name : {std::string("chosen"), (dir_ / "chosen").string()}) {
     try {
       load_material(name);
       FAIL() << name << ": no error";
-    } catch (const MaterialFileError& e) {
+    } catch (const MaterialError& e) {
+      EXPECT_EQ(e.code(), ErrorCode::io);
       EXPECT_THAT(e.what(), HasSubstr(name + ": no such material file, and not a model name"));
       EXPECT_THAT(e.what(), HasSubstr("models: blinn_phong, ward"));
     }

@@ -21,7 +21,8 @@ class AtomicOutput {
   // Where to write. Keeps the target's extension, so format detection by name still works.
   const std::filesystem::path& temp_path() const { return temp_; }
   const std::filesystem::path& target() const { return target_; }
-  // Renames the temporary onto the target; throws std::runtime_error naming the target.
+  // Renames the temporary onto the target; throws Error (ErrorCode::io, brdfnav/core/error.h)
+  // naming the target.
   void commit();
 
  private:
@@ -31,10 +32,10 @@ class AtomicOutput {
 
 // Writes `contents` to `target` atomically and durably: an unnamed temporary (O_TMPFILE, where
 // the filesystem has it) flushed to disk before it is renamed onto the target, so that a killed
-// writer leaves no file behind. Throws std::runtime_error naming the target.
+// writer leaves no file behind. Throws Error (ErrorCode::io) naming the target.
 void write_file_atomic(const std::filesystem::path& target, std::string_view contents);
 
-// The whole of an input file. Throws std::runtime_error naming the file when it is a directory
+// The whole of an input file. Throws Error (ErrorCode::io) naming the file when it is a directory
 // or cannot be opened or read (the system's reason).
 std::string read_file(const std::filesystem::path& path);
 

@@ -2,6 +2,7 @@
 // form lives in the plugin (it needs yaml-cpp); the inline spec is parsed here.
 #pragma once
 
+#include <brdfnav/core/error.h>
 #include <brdfnav/core/models.h>
 
 #include <stdexcept>
@@ -10,7 +11,9 @@
 
 namespace brdfnav {
 
-inline constexpr std::string_view kDefaultColorspace = "lin_rec709";
+// The colour space of materials, renders and the environment maps; the built-in OCIO config's
+// scene-linear space (brdfnav/ocio/color_pipeline.h).
+inline constexpr const char* kDefaultColorspace = "lin_rec709";
 
 struct Material {
   ModelId model = ModelId::blinn_phong;
@@ -21,10 +24,7 @@ struct Material {
 };
 
 // Every parameter error names what is wrong and where (the key, and the file/line when known).
-class MaterialError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using MaterialError = LayerError<struct MaterialErrorTag, ErrorCode::parse>;
 
 // Valid range of rho_d and rho_s components. rho_d <= 1 keeps the diffuse part energy-bounded;
 // rho_s is a multiplier that may exceed 1 for lobes whose albedo is below 1 (Cook-Torrance f0).
@@ -38,7 +38,7 @@ void validate(const Material& m);
 // Images and distances (the renderer, the database's embedding, thumbnails, the navigator) are
 // computed in kDefaultColorspace, the space of the environment maps: rho_d and rho_s given in
 // another space would be read as if they were in it. Until colours are converted, such a
-// material is refused there: MaterialError naming `colorspace`.
+// material is refused there: MaterialError (ErrorCode::invalid_argument) naming `colorspace`.
 void require_render_colorspace(const Material& m);
 // Closure of a validated material.
 Closure make_closure(const Material& m);

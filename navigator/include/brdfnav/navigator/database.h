@@ -5,6 +5,7 @@
 // writes databases through database_format.h beside this file).
 #pragma once
 
+#include <brdfnav/core/error.h>
 #include <brdfnav/core/grid.h>
 #include <brdfnav/core/models.h>
 #include <brdfnav/navigator/embedding.h>
@@ -20,10 +21,7 @@ namespace brdfnav {
 inline constexpr int kDatabaseFormatVersion = 1;
 
 // A database that cannot be built or used; the message names the file.
-class DatabaseError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using DatabaseError = LayerError<struct DatabaseErrorTag, ErrorCode::database>;
 
 // One model's grid in a database (and in a profile, which the builder makes them from).
 struct ProfileGrid {

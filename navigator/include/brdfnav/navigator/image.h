@@ -3,6 +3,7 @@
 // The RMS form makes a radius mean the same at any resolution; it is brdfnav's unit of distance.
 #pragma once
 
+#include <brdfnav/core/error.h>
 #include <brdfnav/core/math.h>
 
 #include <filesystem>
@@ -14,10 +15,7 @@
 namespace brdfnav {
 
 // Unreadable image, mismatched sizes or masks; names the file when there is one.
-class ImageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using ImageError = LayerError<struct ImageErrorTag, ErrorCode::io>;
 
 // Linear float RGBA, row 0 at the top. Alpha is coverage (0 or 1): the metric's mask.
 struct Image {

@@ -7,6 +7,7 @@
 // query allocates its own working memory.
 #pragma once
 
+#include <brdfnav/core/error.h>
 #include <brdfnav/core/material.h>
 #include <brdfnav/navigator/database.h>
 
@@ -26,15 +27,16 @@ namespace brdfnav {
 // A query the database cannot answer (a model it does not hold, a colour space other than its
 // lin_rec709) or that makes no sense (a radius that is not finite or below kMinRadius, k < 1).
 // The message names the argument.
-class NavigatorError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using NavigatorError = LayerError<struct NavigatorErrorTag, ErrorCode::invalid_argument>;
 
 // The smallest radius a query may ask for. Embedded distances carry single-precision noise of
 // about 1e-7 (measured on the test database); at 1e-4 that is 0.1% of the radius, while below
 // 1e-7 the walks would stop at noise, far from the radius. The navigator page starts at 0.002.
 inline constexpr double kMinRadius = 1e-4;
+
+// The k of the models and gallery tabs when a caller gives none: the paper's 8.
+inline constexpr int kDefaultClusters = 8;
+
 // Whether `radius` is one a query may ask for, and what every front end says of one that is not
 // ("must be a finite distance of at least 0.0001").
 inline bool valid_radius(double radius) {
@@ -120,7 +122,8 @@ class Navigator {
   // and models tabs' offers move along their paths to the exact distance `radius` and report it
   // (an offer flagged beyond_radius stays the fit). Throws NavigatorError, and MaterialError for
   // an invalid material.
-  std::vector<Neighbor> neighbors(const Material& current, double radius, Tab tab, int clusters = 8,
+  std::vector<Neighbor> neighbors(const Material& current, double radius, Tab tab,
+                                  int clusters = kDefaultClusters,
                                   const ExactSteps* exact = nullptr) const;
   // `count` maximally different materials over every model (k-means over every grid node, each
   // with a grey rho_d and the rho_s that puts it at one common distance from matte grey). Each

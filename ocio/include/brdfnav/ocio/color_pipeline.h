@@ -5,6 +5,9 @@
 // brdfnav::ocio: OpenColorIO only (no OpenImageIO), so that the navigator's library can link it.
 
 #include <OpenColorIO/OpenColorABI.h>  // OCIO_NAMESPACE, for the processor handle below
+#include <brdfnav/core/error.h>
+#include <brdfnav/core/material.h>
+#include <brdfnav/core/warning.h>
 
 #include <array>
 #include <cstdint>
@@ -20,22 +23,16 @@ class CPUProcessor;
 
 namespace brdfnav::ocio {
 
-// Any colour-management failure: a config that does not load, an unknown display, view or colour
-// space, a malformed image buffer. The message names the file, display, view or colour space.
-class ColorError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-using WarningSink = std::function<void(const std::string&)>;
-
-// The default sink: "brdfnav: warning: <message>" on stderr.
-void stderr_warning(const std::string& message);
+// Any colour-management failure. The message names the file, display, view or colour space. The
+// caller's mistakes (an unknown display or view, a malformed image buffer) are
+// ErrorCode::invalid_argument; the environment's (a config that does not load, lacks the source
+// colour space or cannot build a processor) are ErrorCode::io.
+using ColorError = LayerError<struct ColorErrorTag, ErrorCode::invalid_argument>;
 
 // What describe() and config_source() report for the config built in code.
 inline constexpr const char* kBuiltinConfigName = "built-in";
-// The project's material colour space, and the built-in config's display and views.
-inline constexpr const char* kMaterialColorSpace = "lin_rec709";
+// The built-in config's displays and views; its scene-linear space is kDefaultColorspace
+// (brdfnav/core/material.h), the materials' own.
 inline constexpr const char* kDisplaySRGB = "sRGB";
 inline constexpr const char* kDisplayRec1886 = "Rec.1886";
 inline constexpr const char* kViewStandard = "Standard";
@@ -54,11 +51,11 @@ struct PipelineOptions {
   std::string config_path;
   // Colour space of the input buffers: a name, alias or role of the config. If the config has no
   // such space, its scene_linear role, then its default role, is used instead (with a warning).
-  std::string source = kMaterialColorSpace;
+  std::string source = kDefaultColorspace;
   // Linear RGB, in the source space, that uncovered pixels are composited over before the
   // display transform (mid grey by default).
   std::array<float, 3> background = {0.18f, 0.18f, 0.18f};
-  WarningSink warn = stderr_warning;
+  WarningSink warn = warn_to_stderr;
 };
 
 // One loaded config and its processors. The constructor warns (once, through options.warn) when

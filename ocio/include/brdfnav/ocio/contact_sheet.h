@@ -4,6 +4,7 @@
 // ring around it, each tile with label lines under it. Written as PNG with OpenImageIO
 // (brdfnav::contact_sheet; the colour pipeline alone is brdfnav::ocio).
 
+#include <brdfnav/core/error.h>
 #include <brdfnav/ocio/color_pipeline.h>
 
 #include <cstdint>
@@ -14,10 +15,7 @@
 namespace brdfnav::ocio {
 
 // A bad tile, a missing font, or a sheet that could not be written (the message names the file).
-class ContactSheetError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using ContactSheetError = LayerError<struct ContactSheetErrorTag, ErrorCode::io>;
 
 struct SheetTile {
   // A display-encoded thumbnail (color_pipeline.h). Only RGB is drawn: the pipeline has already

@@ -1,30 +1,21 @@
 // What the C ABIs of brdfnav (libbrdfnav.so, brdfnav.h; libbrdfnav_navigator.so,
 // brdfnav_navigator.h) share: the one place that turns C++ exceptions into a status and a
-// per-thread message, argument checks, and the conversions between the C structs and the core's
-// types. Linked statically into each library, so each keeps its own last error.
+// per-thread message (brdfnav::Error's code onto brdfnav_status), argument checks, and the
+// conversions between the C structs and the core's types. Linked statically into each library,
+// so each keeps its own last error.
 #pragma once
 
 #include <brdfnav/brdfnav.h>
 #include <brdfnav/core/material.h>
 
 #include <array>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace brdfnav::abi {
 
-// A failure the ABI reports with a specific status (argument checks, errors translated at a
-// library's edge).
-class AbiError : public std::runtime_error {
- public:
-  AbiError(brdfnav_status status, const std::string& what)
-      : std::runtime_error(what), status_(status) {}
-  brdfnav_status status() const { return status_; }
-
- private:
-  brdfnav_status status_;
-};
+// The status an Error of `code` is reported with.
+brdfnav_status status_of(ErrorCode code) noexcept;
 
 // The status of the exception being handled (call inside a catch block only), recorded as the
 // calling thread's last error.
@@ -43,7 +34,7 @@ brdfnav_status guarded(Body&& body) noexcept {
   }
 }
 
-// AbiError(INVALID_ARGUMENT, "NAME is NULL") for a null pointer.
+// Error(invalid_argument, "NAME is NULL") for a null pointer.
 void require(const void* pointer, const char* name);
 
 // The functions that create an object: *out is NULL unless `make` (argument checks, then the
@@ -57,7 +48,7 @@ brdfnav_status create_into(T** out, Make&& make) noexcept {
   });
 }
 
-// A material from its C struct; AbiError(INVALID_ARGUMENT) naming the field that is wrong.
+// A material from its C struct; Error(invalid_argument) naming the field that is wrong.
 Material material_from_struct(const brdfnav_material& desc);
 
 // The names and descriptions of the models' tables as NUL-terminated strings that live as long

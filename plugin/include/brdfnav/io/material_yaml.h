@@ -17,13 +17,6 @@ namespace brdfnav {
 
 inline constexpr int kMaterialSchemaVersion = 1;
 
-// A material file that could not be read at all (missing, a directory, unreadable), as opposed to
-// one whose contents are wrong. Lets callers such as the C ABI report an I/O failure.
-class MaterialFileError : public MaterialError {
- public:
-  using MaterialError::MaterialError;
-};
-
 // Parses a whole YAML document; `source` names it in error messages (a path or "<stdin>"). The
 // document may be an export (`brdfnav export`): its `provenance` and `equivalents` keys are
 // accepted and ignored.

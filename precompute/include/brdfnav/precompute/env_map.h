@@ -9,7 +9,9 @@
 // to the right (the map is not mirrored).
 #pragma once
 
+#include <brdfnav/core/error.h>
 #include <brdfnav/core/math.h>
+#include <brdfnav/core/warning.h>
 
 #include <filesystem>
 #include <functional>
@@ -32,15 +34,7 @@ inline constexpr const char* kDefaultEnvPath =
 inline constexpr int kMaxEnvWidth = 16384;
 
 // A map that cannot be used: the message names the file and what is wrong.
-class EnvMapError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// Receives one line per warning (no trailing newline).
-using WarningSink = std::function<void(const std::string&)>;
-// Writes "brdfnav: warning: LINE" to stderr.
-void warn_to_stderr(const std::string& line);
+using EnvMapError = LayerError<struct EnvMapErrorTag, ErrorCode::io>;
 
 struct EnvLoadOptions {
   // Replace NaN and infinite texels by 0 (with one warning line) instead of rejecting the map.

@@ -3,6 +3,7 @@
 // profile is recorded in the database manifest, so a database says exactly how it was made.
 #pragma once
 
+#include <brdfnav/core/error.h>
 #include <brdfnav/core/grid.h>
 #include <brdfnav/core/models.h>
 #include <brdfnav/navigator/database.h>
@@ -16,10 +17,7 @@
 
 namespace brdfnav {
 
-class ProfileError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using ProfileError = LayerError<struct ProfileErrorTag, ErrorCode::parse>;
 
 struct Profile {
   std::string name;

@@ -2,6 +2,7 @@
 // orthographic camera on +z looking toward -z (y up) whose square image spans [-1, 1]^2.
 #pragma once
 
+#include <brdfnav/core/error.h>
 #include <brdfnav/core/math.h>
 
 #include <filesystem>
@@ -13,10 +14,7 @@
 namespace brdfnav {
 
 // A scene that cannot be built (missing or malformed OBJ, Embree failure); names the file.
-class SceneError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using SceneError = LayerError<struct SceneErrorTag, ErrorCode::io>;
 
 // What the camera sees at one pixel centre.
 struct SurfacePoint {
