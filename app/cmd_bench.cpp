@@ -5,6 +5,7 @@
 #include "bench_fidelity.h"
 #include "bench_load.h"
 #include "bench_navigator.h"
+#include "command_options.h"
 #include "commands.h"
 
 #include <brdfnav/core/grid.h>

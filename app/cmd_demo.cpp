@@ -1,6 +1,7 @@
 // `brdfnav demo`: a first look at the six closures for a newcomer — their lobes in the plane of
 // incidence (a PNG plot and a CSV) and their directional albedo at a few angles (a table).
 #include <brdfnav/studies/plot.h>
+#include "command_options.h"
 #include "commands.h"
 
 #include <brdfnav/core/atomic_file.h>

@@ -9,6 +9,10 @@
 
 namespace brdfnav::cli {
 
+namespace {
+
+// "x,y,z" -> normalised vector; Error(invalid_argument) naming `option` when it is not three
+// finite numbers or has zero length.
 Vec3 parse_direction(const std::string& text, const std::string& option) {
   std::istringstream in(text);
   Vec3 v;
@@ -23,8 +27,6 @@ Vec3 parse_direction(const std::string& text, const std::string& option) {
   if (!unit) throw Error(ErrorCode::invalid_argument, option, "direction has zero length");
   return *unit;
 }
-
-namespace {
 
 constexpr const char* kModelsHeader = R"(# The models and their parameters
 

@@ -2,6 +2,7 @@
 // `brdfnav variations`: the same as a labelled contact sheet through OCIO;
 // `brdfnav export`: a chosen material with its provenance and its equivalents in the other
 // models. All read a database made by `brdfnav precompute` (docs/NAVIGATION.md).
+#include "command_options.h"
 #include "commands.h"
 #include "exact_thumbnails.h"
 #include "export_formats.h"
@@ -23,23 +24,6 @@
 #include <stdexcept>
 
 namespace brdfnav::cli {
-
-// CLI11's PositiveNumber lets NaN through (NaN <= 0 is false). Checked here as well as by the
-// navigator so that the error names the option, before the database is opened.
-const CLI::Validator& radius_validator() {
-  static const CLI::Validator validator(
-      [](std::string& text) -> std::string {
-        try {
-          std::size_t used = 0;
-          const double value = std::stod(text, &used);
-          if (used == text.size() && valid_radius(value)) return "";
-        } catch (const std::exception&) {
-        }
-        return radius_requirement() + ", got '" + text + "'";
-      },
-      "RADIUS");
-  return validator;
-}
 
 namespace {
 

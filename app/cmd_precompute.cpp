@@ -1,5 +1,6 @@
 // `brdfnav precompute`: builds the navigation database (docs/DATABASE.md); `brdfnav db-info`:
 // verifies one and prints what it holds.
+#include "command_options.h"
 #include "commands.h"
 #include "progress.h"
 

@@ -2,6 +2,7 @@
 // and, given a database, of its embedding; written as report.md, report.yaml and PNG plots
 // (docs/VALIDATION.md). Every file is written atomically. The command parses the options; the
 // studies, their inputs and the report are the studies room's (studies/, brdfnav::studies).
+#include "command_options.h"
 #include "commands.h"
 
 #include <brdfnav/core/atomic_file.h>
