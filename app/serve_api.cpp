@@ -191,7 +191,8 @@ std::optional<RingId> read_ring(const json& request) {
 }
 
 // Records the request's `ring` in `rings`, if it has one, and returns what its renders call
-// first: it throws RingLeft once the page has asked for a later ring (empty without a ring).
+// first and while they run: it throws RingLeft once the page has asked for a later ring, which
+// drops a render still to start and stops one under way (empty without a ring).
 std::function<void()> enter_ring(LeftRings& rings, const json& request) {
   const std::optional<RingId> ring = read_ring(request);
   if (!ring) return nullptr;
