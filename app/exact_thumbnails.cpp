@@ -102,26 +102,30 @@ std::shared_ptr<const Image> ExactThumbnails::render(const Material& m) const {
   return render(m, impl_->resolution);
 }
 
-std::shared_ptr<const Image> ExactThumbnails::render(
-    const Material& m, int resolution, const std::function<void()>& before_render) const {
+std::shared_ptr<const Image> ExactThumbnails::render(const Material& m, int resolution,
+                                                     const std::function<void()>& check) const {
   validate(m);
   const std::string key = std::to_string(resolution) + " " + format_material_spec(m);
   if (auto image = impl_->cached(key)) return image;
   Impl::Slot& slot = impl_->slot(resolution);
   const std::lock_guard lock(slot.mutex);
   if (auto image = impl_->cached(key)) return image;  // rendered while this one waited
-  if (before_render) before_render();
-  auto image = std::make_shared<const Image>(impl_->ready_renderer(slot, resolution).render(m));
+  if (check) check();
+  Renderer& renderer = impl_->ready_renderer(slot, resolution);
+  // Set for every render, so that none runs with another's check. A throw from it stops the
+  // render between rows; the renderer keeps nothing half-made (render.h).
+  renderer.set_progress(check ? ProgressSink([check](int, int) { check(); }) : ProgressSink());
+  auto image = std::make_shared<const Image>(renderer.render(m));
   impl_->keep(key, image);
   return image;
 }
 
 ExactSteps ExactThumbnails::steps_from(const Material& current, int resolution,
-                                       std::function<void()> before_render) const {
+                                       std::function<void()> check) const {
   const int res = resolution > 0 ? resolution : impl_->resolution;
   ExactSteps steps;
-  steps.distance = [this, current, res, before = std::move(before_render)](const Material& m) {
-    return image_distance(*render(current, res, before), *render(m, res, before));
+  steps.distance = [this, current, res, check = std::move(check)](const Material& m) {
+    return image_distance(*render(current, res, check), *render(m, res, check));
   };
   return steps;
 }

@@ -31,17 +31,18 @@ class ExactThumbnails {
   // material at a time per resolution (each render uses every core), so a large render does not
   // hold the small ones back; a cached one comes back at once. Throws DatabaseError when the
   // database's map has changed or is gone, MaterialError for an invalid material.
-  // `before_render`, when given, is called once the renderer is free, just before a render it
-  // would start (not for a cached image): its exception, if any, leaves the work undone (a ring
-  // the page has left: serve_rings.h).
+  // `check`, when given, is called once the renderer is free, just before a render it would
+  // start (not for a cached image), then from the renderer's progress while it runs (after each
+  // row the calling thread finishes): its exception, if any, leaves the work undone or stops it
+  // (a ring the page has left: serve_rings.h), and nothing of a stopped render is cached.
   std::shared_ptr<const Image> render(const Material& m) const;
   std::shared_ptr<const Image> render(const Material& m, int resolution,
-                                      const std::function<void()>& before_render = {}) const;
+                                      const std::function<void()>& check = {}) const;
   // Steps measured on these renders (Navigator::neighbors): the image metric's distance from
   // `current`'s render, at `resolution` (0: resolution()). The renders stay in the cache, so the
   // thumbnails of the offers are ready once their steps are. Keeps a reference to *this.
   ExactSteps steps_from(const Material& current, int resolution = 0,
-                        std::function<void()> before_render = {}) const;
+                        std::function<void()> check = {}) const;
 
  private:
   struct Impl;

@@ -3,9 +3,9 @@
 #include "export_formats.h"
 
 #include <brdfnav/io/material_yaml.h>
+#include <brdfnav/navigator/display_thumbnails.h>
 #include <brdfnav/navigator/navigation_json.h>
 #include <brdfnav/navigator/navigation_yaml.h>
-#include <brdfnav/navigator/silhouette.h>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -192,7 +192,8 @@ std::optional<RingId> read_ring(const json& request) {
 }
 
 // Records the request's `ring` in `rings`, if it has one, and returns what its renders call
-// first: it throws RingLeft once the page has asked for a later ring (empty without a ring).
+// first and while they run: it throws RingLeft once the page has asked for a later ring, which
+// drops a render still to start and stops one under way (empty without a ring).
 std::function<void()> enter_ring(LeftRings& rings, const json& request) {
   const std::optional<RingId> ring = read_ring(request);
   if (!ring) return nullptr;
@@ -266,7 +267,8 @@ std::pair<std::string, std::string> read_display_view(const ocio::ColorPipeline&
   return {display, view};
 }
 
-// 8-bit RGBA as a PNG file in memory.
+// 8-bit RGBA as a PNG file in memory: display_encode()'s, whose straight alpha is PNG's own
+// convention, so that a browser composites the sphere's edge over whatever lies behind.
 std::string encode_png(const std::vector<std::uint8_t>& rgba, int width, int height) {
   std::vector<unsigned char> bytes;
   OIIO::Filesystem::IOVecOutput proxy(bytes);
@@ -278,23 +280,6 @@ std::string encode_png(const std::vector<std::uint8_t>& rgba, int width, int hei
     throw std::runtime_error("cannot encode the thumbnail as PNG: " +
                              (out ? out->geterror() : OIIO::geterror()));
   return std::string(bytes.begin(), bytes.end());
-}
-
-// What the page shows of a linear image: its display encoding as a PNG whose alpha is the
-// coverage, not associated with the colour (PNG's own convention), so that a browser composites
-// the edge over whatever lies behind. The sphere's silhouette is antialiased first (the renderer's
-// mask is 0 or 1); a mesh's keeps its 0/1 mask.
-std::string display_png(Image image, bool sphere, const ocio::ColorPipeline& colour,
-                        const std::string& display, const std::string& view) {
-  if (sphere) antialias_sphere_silhouette(image);
-  std::vector<float> coverage(image.rgba.size() / 4);
-  for (std::size_t i = 0; i < coverage.size(); ++i)
-    coverage[i] = std::exchange(image.rgba[4 * i + 3], 1.f);  // no compositing by the pipeline
-  std::vector<std::uint8_t> rgba =
-      colour.apply(image.rgba.data(), image.width, image.height, display, view);
-  for (std::size_t i = 0; i < coverage.size(); ++i)
-    rgba[4 * i + 3] = std::uint8_t(std::lround(255.f * std::clamp(coverage[i], 0.f, 1.f)));
-  return encode_png(rgba, image.width, image.height);
 }
 
 // The API's paths: /api/info is read with GET (httplib answers HEAD with the GET handler and
@@ -437,11 +422,11 @@ ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
       throw request_error(
           "size", "a preview is drawn at " + std::to_string(thumbnails_.resolution()) + " px only");
     const std::function<void()> before_render = enter_ring(rings_, request);
-    const std::shared_ptr<const Image> rendered =
-        quick ? std::make_shared<const Image>(thumbnails_.render(m))
-              : exact_.render(m, size, before_render);
-    const bool sphere = navigator_.database().manifest().scene == "sphere";
-    return ApiResponse{200, "image/png", display_png(*rendered, sphere, colour_, display, view)};
+    // A copy of a cached exact render: the display encoding works in place.
+    Image linear = quick ? thumbnails_.render(m) : Image(*exact_.render(m, size, before_render));
+    const ocio::Thumbnail shown = display_encode(
+        std::move(linear), shows_sphere(navigator_.database()), colour_, display, view);
+    return ApiResponse{200, "image/png", encode_png(shown.rgba, shown.width, shown.height)};
   });
 }
 

@@ -21,7 +21,8 @@ struct RingId {
   std::uint64_t ring = 0;
 };
 
-// Thrown by the work of a ring its page has left, before a render it would start.
+// Thrown by the work of a ring its page has left: before a render it would start, or between
+// the rows of one under way (ExactThumbnails::render).
 class RingLeft : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

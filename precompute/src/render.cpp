@@ -140,7 +140,8 @@ struct Renderer::Impl {
   }
 
   // The environment filtered over each pixel's footprint around its mirror direction (no
-  // progress of its own: it takes about a tenth of one He image).
+  // progress of its own: it takes about a tenth of one He image). Kept only once complete: a
+  // stopped pass leaves `mirrored` empty.
   void compute_mirror_lookups() {
     if (mirrored) return;
     auto lookup = [&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {

@@ -8,10 +8,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace brdfnav::cli {
@@ -194,6 +196,28 @@ TEST(ServeApi, TheRendersOfARingThePageHasLeftAreDropped) {
     EXPECT_EQ(refused.status, 400) << bad;
     EXPECT_EQ(error_of(refused).rfind("ring: expected {", 0), 0u) << error_of(refused);
   }
+}
+
+// A ring the page leaves while its thumbnail renders: the render stops and the request answers
+// 409. The page moves on once the render has had time to start (a 512 px render takes seconds
+// here); had it not started, it would be dropped before starting, with the same answer.
+// tests/app/test_exact_thumbnails.cpp shows deterministically where the render stops.
+TEST(ServeApi, ARingLeftWhileItsThumbnailRendersAnswers409) {
+  ApiResponse running;
+  std::thread page([&] {
+    running = call("POST", "/api/thumbnail",
+                   R"({"material": {"model": "ward", "params": {"alpha_x": 0.31, "alpha_y": 0.07},)"
+                   R"( "rho_d": [0.2, 0.2, 0.2], "rho_s": [0.04, 0.04, 0.04],)"
+                   R"( "colorspace": "lin_rec709"}, "size": 512,)"
+                   R"( "ring": {"client": "page-r", "id": 1}})");
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  const ApiResponse next = call("POST", "/api/thumbnail",
+                                R"({"material": )" + kMaterial +
+                                    R"(, "preview": true, "ring": {"client": "page-r", "id": 2}})");
+  page.join();
+  EXPECT_EQ(next.status, 200);
+  EXPECT_EQ(running.status, 409) << running.body;
 }
 
 // The pages it remembers: the least recently heard from is forgotten first, and a late request

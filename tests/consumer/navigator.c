@@ -67,7 +67,8 @@ int main(int argc, char** argv) {
                "thumbnail");
     if (ok) {
       const unsigned char* centre = rgba + ((size_t)(height / 2) * (size_t)width + width / 2) * 4;
-      ok = centre[3] == 255 && rgba[3] == 0;
+      /* Straight alpha over nothing (ABI 3): the corner is 0 0 0 0, not mid grey. */
+      ok = centre[3] == 255 && rgba[0] == 0 && rgba[1] == 0 && rgba[2] == 0 && rgba[3] == 0;
       printf("thumbnail %dx%d on %s / %s: centre %d %d %d, corner alpha %d\n", width, height,
              display, view, centre[0], centre[1], centre[2], rgba[3]);
     }

@@ -1,7 +1,7 @@
 // parallel_for() (brdfnav/core/parallel_for.h), which the renderer, the PCA and the
 // conversion fits run on: every task once, on a worker id below the thread count, progress on the
-// calling thread only and ending at the count, and the first exception rethrown after the workers
-// stop.
+// calling thread only and ending at the count, and the first exception (a task's or progress's)
+// rethrown after the workers stop.
 #include <brdfnav/core/parallel_for.h>
 
 #include <gtest/gtest.h>
@@ -64,6 +64,30 @@ TEST(ParallelFor, StopsAtTheFirstExceptionAndRethrowsIt) {
     EXPECT_STREQ(e.what(), "task 10 failed");
   }
   EXPECT_LT(started, 1000);
+}
+
+// A progress that throws (a render whose ring was left) stops the work as a failing task does.
+// The helpers hold their first task until the calling thread's first report has thrown, so the
+// test does not depend on the scheduling: without the stop they would then run all 1000 tasks.
+TEST(ParallelFor, AnExceptionFromProgressStopsNewTasks) {
+  constexpr int kThreads = 3;
+  std::atomic<int> started{0};
+  std::atomic<bool> thrown{false};
+  const auto task = [&](std::size_t, int worker) {
+    ++started;
+    while (worker != 0 && !thrown) std::this_thread::yield();
+  };
+  const auto progress = [&](std::size_t) {
+    thrown = true;
+    throw std::runtime_error("left");
+  };
+  try {
+    parallel_for(1000, kThreads, task, progress);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "left");
+  }
+  EXPECT_LE(started, kThreads);  // the caller's first task and at most one per helper
 }
 
 }  // namespace

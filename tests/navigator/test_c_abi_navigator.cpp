@@ -187,16 +187,16 @@ TEST_F(CAbiNavigator, ReportsBadQueriesWithStatusAndMessage) {
 }
 
 // The library reports the header's version, and the loader's check refuses it for a host built
-// against another: version 1, before brdfnav_neighbor gained words, change and opposite.
+// against another: version 2, whose thumbnails were composited over grey with a 0/1 alpha.
 TEST(CAbiNavigatorVersion, IsTheHeadersAndALoaderOfAnotherRefusesIt) {
-  static_assert(BRDFNAV_NAVIGATOR_ABI_VERSION == 2);
+  static_assert(BRDFNAV_NAVIGATOR_ABI_VERSION == 3);
   EXPECT_NO_THROW(test::open_library(BRDFNAV_NAVIGATOR_PATH, "brdfnav_navigator_abi_version",
                                      BRDFNAV_NAVIGATOR_ABI_VERSION));
   try {
-    test::open_library(BRDFNAV_NAVIGATOR_PATH, "brdfnav_navigator_abi_version", 1);
-    ADD_FAILURE() << "a library of version 2 was accepted for version 1";
+    test::open_library(BRDFNAV_NAVIGATOR_PATH, "brdfnav_navigator_abi_version", 2);
+    ADD_FAILURE() << "a library of version 3 was accepted for version 2";
   } catch (const std::runtime_error& e) {
-    EXPECT_THAT(e.what(), HasSubstr("ABI version 2, expected 1"));
+    EXPECT_THAT(e.what(), HasSubstr("ABI version 3, expected 2"));
   }
 }
 
@@ -274,7 +274,8 @@ struct GalleryMaterial {
 };
 
 // A database material's thumbnail in sRGB / Standard is the C++ display thumbnail byte for byte,
-// which is the pipeline's encoding of the linear thumbnail at the database's resolution.
+// which is display_encode() of the linear thumbnail at the database's resolution (what the server
+// shows): straight alpha, the sphere's edge antialiased.
 TEST_F(CAbiNavigator, ThumbnailsMatchTheCppDisplayThumbnails) {
   const BuiltinOcioConfig builtin;
   const GalleryMaterial material(nav.navigator);
@@ -303,11 +304,15 @@ TEST_F(CAbiNavigator, ThumbnailsMatchTheCppDisplayThumbnails) {
   ASSERT_EQ(expected.width, resolution);
   EXPECT_EQ(rgba, expected.rgba);
   const Image linear = thumbnails.render(m);
-  EXPECT_EQ(rgba, display.pipeline().apply(linear.rgba.data(), resolution, resolution, "sRGB",
-                                           "Standard"));
-  // Covered pixels are opaque, the corners (outside the sphere) transparent.
+  EXPECT_EQ(rgba, display_encode(linear, true, display.pipeline(), "sRGB", "Standard").rgba);
+  // Covered pixels are opaque, the corners (outside the sphere) 0 0 0 0, not over grey; the edge
+  // partly covered.
   EXPECT_EQ(rgba[((resolution / 2) * resolution + resolution / 2) * 4 + 3], 255);
-  EXPECT_EQ(rgba[3], 0);
+  EXPECT_EQ(std::vector<unsigned char>(rgba.begin(), rgba.begin() + 4),
+            std::vector<unsigned char>(4, 0));
+  int partial = 0;
+  for (std::size_t i = 3; i < bytes; i += 4) partial += rgba[i] > 0 && rgba[i] < 255;
+  EXPECT_GT(partial, 0);
 
   // Another view of the same material differs: the view is applied, not ignored.
   std::vector<unsigned char> aces(bytes);

@@ -1,10 +1,14 @@
 // The sphere's silhouette as a thumbnail shows it: alpha the fraction of each pixel inside the
 // unit disk, the colour of the pixels the renderer left uncovered borrowed from their covered
-// neighbours, everything else as rendered.
+// neighbours, everything else as rendered; and the display encoding of it, with straight alpha.
+#include <brdfnav/navigator/display_thumbnails.h>
 #include <brdfnav/navigator/silhouette.h>
+#include <brdfnav/ocio/color_pipeline.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <string>
 
 namespace brdfnav {
 namespace {
@@ -58,6 +62,36 @@ TEST(Silhouette, AlphaIsTheCoverageOfTheDisk) {
   // Far from the edge, nothing changes.
   EXPECT_EQ(shown.pixel(n / 2, n / 2)[3], 1.f);
   EXPECT_EQ(shown.pixel(0, 0)[3], 0.f);
+}
+
+// display_encode(): straight alpha. A grey disk's edge keeps the grey of its inside (no
+// darkening by the coverage), its alpha the antialiased coverage; without `sphere` the mask stays
+// 0 or 1; a pixel nothing covers is 0 0 0 0.
+TEST(Silhouette, DisplayEncodingHasStraightAlphaAndTheAntialiasedEdge) {
+  const int n = 32;
+  Image disk = rendered_disk(n);
+  for (std::size_t i = 0; i < disk.rgba.size(); i += 4)
+    if (disk.rgba[i + 3] > 0) disk.rgba[i] = disk.rgba[i + 1] = disk.rgba[i + 2] = 0.18f;
+  Image antialiased = disk;
+  antialias_sphere_silhouette(antialiased);
+  const ocio::ColorPipeline pipeline;
+  const std::string display = pipeline.default_display();
+  const std::string view = pipeline.default_view(display);
+  const ocio::Thumbnail shown = display_encode(disk, true, pipeline, display, view);
+  const ocio::Thumbnail mesh = display_encode(disk, false, pipeline, display, view);
+  const std::uint8_t* inside = &shown.rgba[(std::size_t(n / 2) * n + n / 2) * 4];
+  EXPECT_GT(inside[0], 0);
+  int partial = 0;
+  for (std::size_t p = 0; p < shown.rgba.size() / 4; ++p) {
+    const std::uint8_t* s = &shown.rgba[4 * p];
+    const float coverage = antialiased.rgba[4 * p + 3];
+    ASSERT_EQ(s[3], std::lround(255 * coverage)) << p;
+    partial += s[3] > 0 && s[3] < 255;
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(s[c], s[3] ? inside[c] : 0) << p << " " << c;
+    const bool covered = disk.rgba[4 * p + 3] > 0;
+    ASSERT_EQ(mesh.rgba[4 * p + 3], covered ? 255 : 0) << p;
+  }
+  EXPECT_GT(partial, 20);
 }
 
 TEST(Silhouette, RefusesAnImageThatIsNotSquare) {

@@ -163,12 +163,15 @@ TEST(Thumbnails, ThroughOcioMatchTheSrgbEncoding) {
   }
 }
 
-// The navigator's display thumbnails are the pipeline's encoding of its linear thumbnails, byte for
-// byte, on every display and view of the config.
-TEST(DisplayThumbnails, AreThePipelinesEncodingOfTheLinearThumbnail) {
+// The navigator's display thumbnails are display_encode() of its linear thumbnails, byte for
+// byte, on every display and view of the config: what the server shows. Inside the sphere (alpha
+// 1 before and after the edge is antialiased) they are the pipeline's encoding of the linear
+// thumbnail.
+TEST(DisplayThumbnails, AreTheDisplayEncodingOfTheLinearThumbnail) {
   const Thumbnails thumbnails(database(), 48);
   const DisplayThumbnails display(thumbnails);
   EXPECT_EQ(display.resolution(), 48);
+  ASSERT_TRUE(shows_sphere(database()));
   EXPECT_EQ(&display.linear(), &thumbnails);
   const ocio::ColorPipeline reference;
   const Material m = ward(0.02, 0.05);
@@ -180,7 +183,11 @@ TEST(DisplayThumbnails, AreThePipelinesEncodingOfTheLinearThumbnail) {
       const ocio::Thumbnail t = display.render(m, d, v);
       EXPECT_EQ(t.width, 48);
       EXPECT_EQ(t.height, 48);
-      EXPECT_EQ(t.rgba, reference.apply(linear.rgba.data(), linear.width, linear.height, d, v));
+      EXPECT_EQ(t.rgba, display_encode(linear, true, reference, d, v).rgba);
+      const std::vector<std::uint8_t> piped =
+          reference.apply(linear.rgba.data(), linear.width, linear.height, d, v);
+      const std::size_t centre = (24 * 48 + 24) * 4;
+      for (std::size_t i = centre; i < centre + 4; ++i) EXPECT_EQ(t.rgba[i], piped[i]) << i;
       ++pairs;
     }
   EXPECT_GE(pairs, 1);

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iomanip>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 namespace brdfnav {
@@ -102,6 +103,31 @@ TEST(Render, HeImagesDoNotDependOnTheRenderersHistory) {
   Renderer prepared(interior(), sphere, 16);
   prepared.prepare(smooth);
   EXPECT_EQ(prepared.specular(smooth).rgba, used.specular(smooth).rgba);
+}
+
+// A progress that throws stops the render (a ring the page has left), in the diffuse pass or in
+// the lobe's; what the renderer caches is kept only once complete, so the images it makes after
+// are those of a fresh renderer, to the bit.
+TEST(Render, AStoppedRenderLeavesNothingHalfMade) {
+  const Scene sphere = Scene::sphere();
+  Material m;
+  m.model = ModelId::he;
+  m.params = {0.1, 10, 1.5};
+  m.rho_d = Rgb(0.3, 0.2, 0.1);
+  m.rho_s = Rgb(0.5, 0.5, 0.5);
+  Renderer fresh(interior(), sphere, 16), stopped(interior(), sphere, 16);
+  const Image expected = fresh.render(m);
+  // Its first call, after a row or at the end of the pass, however the rows fell to the threads.
+  const auto stop = [](int, int) { throw std::runtime_error("stopped"); };
+  stopped.set_progress(stop);
+  EXPECT_THROW(stopped.render(m), std::runtime_error);  // in the diffuse pass
+  stopped.set_progress({});
+  stopped.diffuse();
+  stopped.set_progress(stop);
+  EXPECT_THROW(stopped.render(m), std::runtime_error);  // in He's pass, its mirror lookups made
+  stopped.set_progress({});
+  EXPECT_EQ(stopped.render(m).rgba, expected.rgba);
+  EXPECT_EQ(stopped.diffuse().rgba, fresh.diffuse().rgba);
 }
 
 // The precompute renders He's lobes along eta in one pass (shares_quadrature()): each image is

@@ -24,8 +24,10 @@
  *    with its own version and error message.
  * 2: brdfnav_neighbor gained words, change and opposite (a change of its layout that version 1
  *    did not mark); display thumbnails through OpenColorIO (brdfnav_navigator_displays(),
- *    _display(), _views(), _view(), _thumbnail_size(), _thumbnail()). */
-#define BRDFNAV_NAVIGATOR_ABI_VERSION 2
+ *    _display(), _views(), _view(), _thumbnail_size(), _thumbnail()).
+ * 3: a thumbnail's bytes are those `brdfnav serve` shows: straight alpha, the sphere's edge
+ *    antialiased, nothing composited over grey (the same size and layout as in version 2). */
+#define BRDFNAV_NAVIGATOR_ABI_VERSION 3
 
 #ifdef __cplusplus
 extern "C" {
@@ -135,11 +137,13 @@ BRDFNAV_API brdfnav_status brdfnav_navigator_thumbnail_size(const brdfnav_naviga
                                                             int* width, int* height);
 /* The thumbnail of `material` (a lin_rec709 material of a model the database holds, as
  * brdfnav_navigator_neighbors() takes) on `display` through `view`: *width x *height pixels of 4
- * bytes, R G B A, row-major, row 0 at the top, written to `rgba`. RGB is display-encoded, the
- * pixels the sphere does not cover composited over mid grey (linear 0.18) first; A is 255 where
- * the sphere covers the pixel, 0 elsewhere. `capacity` is the size of `rgba` in bytes, at least
- * width * height * 4 (brdfnav_navigator_thumbnail_size()). An unknown display or view, a
- * smaller capacity, and a material the navigator does not take are
+ * bytes, R G B A, row-major, row 0 at the top, written to `rgba`: what `brdfnav serve` shows.
+ * RGB is the display encoding of the surface's own colour, composited over nothing; A is the
+ * fraction of the pixel the surface covers, straight (not associated with RGB): composite with
+ * "over" as rgb * a + background * (1 - a). The sphere's edge is antialiased (A between 0 and
+ * 255 there); a mesh scene's A is 0 or 255. A pixel nothing covers is 0 0 0 0. `capacity` is
+ * the size of `rgba` in bytes, at least width * height * 4 (brdfnav_navigator_thumbnail_size()).
+ * An unknown display or view, a smaller capacity, and a material the navigator does not take are
  * BRDFNAV_ERROR_INVALID_ARGUMENT (the message names the display or view and lists the valid
  * ones), with nothing written. */
 BRDFNAV_API brdfnav_status brdfnav_navigator_thumbnail(const brdfnav_navigator* navigator,

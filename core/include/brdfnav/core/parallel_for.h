@@ -28,8 +28,9 @@ struct NoProgress {
 // thread is 0), for scratch memory of its own. The tasks must be independent, so that what they
 // compute does not depend on the scheduling. The calling thread calls progress(finished) after
 // each of its tasks and, unless a task failed, progress(count) once all are done: the last report
-// always says "all", however the tasks fell to the threads. After the first exception no new task
-// starts; it is rethrown once every worker has stopped.
+// always says "all", however the tasks fell to the threads. After the first exception, a task's or
+// progress's (a caller that stops the work: a render nobody waits for), no new task starts; it is
+// rethrown once every worker has stopped.
 template <typename Task, typename Progress = NoProgress>
 void parallel_for(std::size_t count, int threads, Task&& task, Progress progress = {}) {
   std::atomic<std::size_t> next{0}, finished{0};
@@ -43,13 +44,13 @@ void parallel_for(std::size_t count, int threads, Task&& task, Progress progress
           task(i, id);
         else
           task(i);
+        const std::size_t now = ++finished;
+        if (id == 0) progress(reported = now);
       } catch (...) {
         const std::lock_guard lock(mutex);
         if (!failure) failure = std::current_exception();
         next = count;
       }
-      const std::size_t now = ++finished;
-      if (id == 0) progress(reported = now);
     }
   };
   {

@@ -33,6 +33,7 @@ class Thumbnails {
                       std::size_t cache_bytes = kDefaultCacheBytes);
 
   int resolution() const { return resolution_; }
+  const Database& database() const { return database_; }
   // Linear RGBA at resolution() x resolution(), alpha the database's mask. Throws
   // MaterialError for an invalid material, DatabaseError for a model the database lacks or an
   // unreadable image. Thread-safe.

@@ -44,7 +44,10 @@ struct RenderQuality {
 };
 
 // Called with (rows done, rows total) from the thread that called the renderer, a few times a
-// second while it works, and once at the end.
+// second while it works (after each row of its own), and once at the end of each pass. An
+// exception it throws stops the render (no new row starts; it is rethrown once the rows under way
+// are done): a caller's way to drop work nobody waits for. What the renderer caches (diffuse(),
+// prepare()) is kept only once complete, so the next image is the one a fresh renderer makes.
 using ProgressSink = std::function<void(int done, int total)>;
 
 struct RenderOptions {
