@@ -69,7 +69,7 @@ void write_lobe_plot(const std::filesystem::path& dir) {
     Material m = parse_material_spec(kSettings[k].spec);
     m.rho_d = Rgb::Zero(), m.rho_s = Rgb::Ones();
     const Closure c = make_closure(m);
-    PlotSeries s{kSettings[k].label, {}, {}, plot_colour(k)};
+    PlotSeries s{kSettings[k].label, {}, {}, plot_color(k)};
     for (double deg = -89; deg <= 89; deg += 0.5) {
       const double t = deg * kPi / 180;
       const Vec3 wi(-std::sin(t), 0, std::cos(t));  // +45 deg is the mirror direction

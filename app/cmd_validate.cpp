@@ -72,10 +72,10 @@ void add_validate_command(CLI::App& app) {
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--out,-o", o->out, "Report directory (created if missing)")->required();
   cmd->callback([o] {
-    const ocio::ColorPipeline colour;
+    const ocio::ColorPipeline color;
     const ValidationResults r = run(*o);
     const fs::path dir(o->out);
-    const std::vector<ReportFile> files = write_report_plots(dir, r, colour);
+    const std::vector<ReportFile> files = write_report_plots(dir, r, color);
     write_file_atomic(dir / "report.yaml", report_yaml(r, files));
     write_file_atomic(dir / "report.md", report_markdown(r, files));
     std::printf("Wrote %s (and report.yaml, %zu plots)\n", (dir / "report.md").c_str(),

@@ -20,7 +20,7 @@ std::string number(double v) {
   return text;
 }
 
-std::string colour(const Rgb& c) {
+std::string color(const Rgb& c) {
   return number(c[0]) + ", " + number(c[1]) + ", " + number(c[2]);
 }
 
@@ -214,16 +214,16 @@ std::string materialx_document(const RendererExport& e) {
   out +=
       "  <oren_nayar_diffuse_bsdf name=\"brdfnav_diffuse\" type=\"BSDF\">\n"
       "    <input name=\"color\" type=\"color3\" value=\"" +
-      colour(e.ggx.rho_d) +
+      color(e.ggx.rho_d) +
       "\" />\n"
       "    <input name=\"roughness\" type=\"float\" value=\"0\" />\n"
       "  </oren_nayar_diffuse_bsdf>\n"
       "  <generalized_schlick_bsdf name=\"brdfnav_specular\" type=\"BSDF\">\n"
       "    <input name=\"color0\" type=\"color3\" value=\"" +
-      colour(e.ggx.rho_s) +
+      color(e.ggx.rho_s) +
       "\" />\n"
       "    <input name=\"color90\" type=\"color3\" value=\"" +
-      colour(e.ggx.rho_s) +
+      color(e.ggx.rho_s) +
       "\" />\n"
       "    <input name=\"roughness\" type=\"vector2\" value=\"" +
       alpha_x + ", " + alpha_y +

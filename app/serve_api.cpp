@@ -249,18 +249,17 @@ json database_json(const Database& db) {
 }
 
 // The request's display and view, or the config's defaults; each checked against the config.
-std::pair<std::string, std::string> read_display_view(const ocio::ColorPipeline& colour,
+std::pair<std::string, std::string> read_display_view(const ocio::ColorPipeline& color,
                                                       const json& request) {
-  const std::string display =
-      optional_string(request, "display").value_or(colour.default_display());
+  const std::string display = optional_string(request, "display").value_or(color.default_display());
   try {
-    colour.views(display);
+    color.views(display);
   } catch (const ocio::ColorError& e) {
     throw request_error("display", e.what());
   }
-  const std::string view = optional_string(request, "view").value_or(colour.default_view(display));
+  const std::string view = optional_string(request, "view").value_or(color.default_view(display));
   try {
-    colour.validate(display, view);
+    color.validate(display, view);
   } catch (const ocio::ColorError& e) {
     throw request_error("view", e.what());
   }
@@ -375,13 +374,13 @@ ApiResponse NavigatorApi::info() const {
     json tabs = json::array();
     for (Tab t : kTabs) tabs.push_back(tab_name(t));
     json displays = json::array();
-    for (const std::string& d : colour_.displays())
-      displays.push_back({{"name", d}, {"views", colour_.views(d)}});
+    for (const std::string& d : color_.displays())
+      displays.push_back({{"name", d}, {"views", color_.views(d)}});
     return json_response(
         {{"models", models},
          {"tabs", tabs},
          {"displays", displays},
-         {"colour_config", colour_.describe()},
+         {"colour_config", color_.describe()},
          {"radius", {{"min", kSliderMin}, {"max", kSliderMax}, {"start", kSliderStart}}},
          {"start", material_json(navigator_.start_material())},
          {"thumbnail_resolution", thumbnails_.resolution()},
@@ -415,7 +414,7 @@ ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
     const json request =
         parse_body(body, {"material", "display", "view", "preview", "size", "ring"});
     const Material m = read_material(navigator_.database(), require(request, "material"));
-    const auto [display, view] = read_display_view(colour_, request);
+    const auto [display, view] = read_display_view(color_, request);
     const bool quick = read_flag(request, "preview");
     const int size = read_size(request, sizes_);
     if (quick && size != thumbnails_.resolution())
@@ -425,7 +424,7 @@ ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
     // A copy of a cached exact render: the display encoding works in place.
     Image linear = quick ? thumbnails_.render(m) : Image(*exact_.render(m, size, before_render));
     const ocio::Thumbnail shown = display_encode(
-        std::move(linear), shows_sphere(navigator_.database()), colour_, display, view);
+        std::move(linear), shows_sphere(navigator_.database()), color_, display, view);
     return ApiResponse{200, "image/png", encode_png(shown.rgba, shown.width, shown.height)};
   });
 }

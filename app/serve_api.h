@@ -109,7 +109,7 @@ class NavigatorApi {
   ExactThumbnails exact_;
   std::vector<int> sizes_;  // of a thumbnail: the thumbnails' resolution first
   mutable LeftRings rings_;
-  ocio::ColorPipeline colour_;
+  ocio::ColorPipeline color_;
 };
 
 }  // namespace brdfnav::cli

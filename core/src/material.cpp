@@ -42,7 +42,7 @@ double parse_number(std::string_view text, std::string_view key) {
 }
 
 // "0.2" is grey; "0.2/0.3/0.4" is RGB.
-Rgb parse_colour(std::string_view text, std::string_view key) {
+Rgb parse_color(std::string_view text, std::string_view key) {
   std::vector<std::string_view> parts;
   std::size_t start = 0;
   for (std::size_t slash; (slash = text.find('/', start)) != std::string_view::npos;
@@ -163,9 +163,9 @@ Material parse_material_spec(std::string_view spec) {
       throw MaterialError("key '" + std::string(key) + "' is given twice");
     seen.push_back(key);
     if (key == "rho_d") {
-      m.rho_d = parse_colour(value, key);
+      m.rho_d = parse_color(value, key);
     } else if (key == "rho_s") {
-      m.rho_s = parse_colour(value, key);
+      m.rho_s = parse_color(value, key);
     } else if (key == "colorspace") {
       m.colorspace = std::string(value);
     } else if (const int i = find_param(*info, key); i >= 0) {

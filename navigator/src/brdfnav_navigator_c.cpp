@@ -20,8 +20,8 @@ struct brdfnav_navigator {
   // The display thumbnails at the database's resolution, and the config's displays and views as
   // the C strings the ABI hands out. Made by the first call that needs them (colour_of()): a host
   // that only navigates never loads an OCIO config.
-  struct Colour {
-    explicit Colour(const brdfnav::Database& database)
+  struct Color {
+    explicit Color(const brdfnav::Database& database)
         : thumbnails(database, 0), display(thumbnails) {
       for (std::string& d : display.pipeline().displays()) {
         views.push_back(display.pipeline().views(d));
@@ -37,8 +37,8 @@ struct brdfnav_navigator {
   explicit brdfnav_navigator(brdfnav::Navigator n) : navigator(std::move(n)) {}
 
   brdfnav::Navigator navigator;
-  mutable std::mutex colour_mutex;
-  mutable std::unique_ptr<const Colour> colour;  // set once, then immutable
+  mutable std::mutex color_mutex;
+  mutable std::unique_ptr<const Color> color;  // set once, then immutable
 };
 
 struct brdfnav_neighbors {
@@ -92,25 +92,25 @@ brdfnav_status list_query(const brdfnav_navigator* navigator, brdfnav_neighbors*
   });
 }
 
-using Colour = brdfnav_navigator::Colour;
+using Color = brdfnav_navigator::Color;
 
 // The navigator's display thumbnails, made on first use. A config that does not load is the
 // host's environment ($OCIO), not a bad argument (ColorError, ErrorCode::io: BRDFNAV_ERROR_IO),
 // and the next call tries again.
-const Colour& colour_of(const brdfnav_navigator* navigator) {
+const Color& color_of(const brdfnav_navigator* navigator) {
   require(navigator, "navigator");
-  std::lock_guard lock(navigator->colour_mutex);
-  if (!navigator->colour)
-    navigator->colour = std::make_unique<const Colour>(navigator->navigator.database());
-  return *navigator->colour;
+  std::lock_guard lock(navigator->color_mutex);
+  if (!navigator->color)
+    navigator->color = std::make_unique<const Color>(navigator->navigator.database());
+  return *navigator->color;
 }
 
 // The views of `display`, one of the config's.
-const std::vector<std::string>& views_of(const Colour& colour, const char* display) {
+const std::vector<std::string>& views_of(const Color& color, const char* display) {
   require(display, "display");
-  colour.display.pipeline().views(display);  // an unknown display: ErrorCode::invalid_argument
-  const auto it = std::find(colour.displays.begin(), colour.displays.end(), display);
-  return colour.views[static_cast<std::size_t>(it - colour.displays.begin())];
+  color.display.pipeline().views(display);  // an unknown display: ErrorCode::invalid_argument
+  const auto it = std::find(color.displays.begin(), color.displays.end(), display);
+  return color.views[static_cast<std::size_t>(it - color.displays.begin())];
 }
 
 // Error(invalid_argument) unless `index` < `count`; `what` names the list.
@@ -222,26 +222,26 @@ void brdfnav_neighbors_free(brdfnav_neighbors* list) {
 
 brdfnav_status brdfnav_navigator_displays(const brdfnav_navigator* navigator, size_t* count) {
   return guarded([&] {
-    const Colour& colour = colour_of(navigator);
+    const Color& color = color_of(navigator);
     require(count, "count");
-    *count = colour.displays.size();
+    *count = color.displays.size();
   });
 }
 
 brdfnav_status brdfnav_navigator_display(const brdfnav_navigator* navigator, size_t index,
                                          const char** name) {
   return guarded([&] {
-    const Colour& colour = colour_of(navigator);
-    require_index(index, colour.displays.size(), "display");
+    const Color& color = color_of(navigator);
+    require_index(index, color.displays.size(), "display");
     require(name, "name");
-    *name = colour.displays[index].c_str();
+    *name = color.displays[index].c_str();
   });
 }
 
 brdfnav_status brdfnav_navigator_views(const brdfnav_navigator* navigator, const char* display,
                                        size_t* count) {
   return guarded([&] {
-    const std::vector<std::string>& views = views_of(colour_of(navigator), display);
+    const std::vector<std::string>& views = views_of(color_of(navigator), display);
     require(count, "count");
     *count = views.size();
   });
@@ -250,7 +250,7 @@ brdfnav_status brdfnav_navigator_views(const brdfnav_navigator* navigator, const
 brdfnav_status brdfnav_navigator_view(const brdfnav_navigator* navigator, const char* display,
                                       size_t index, const char** name) {
   return guarded([&] {
-    const std::vector<std::string>& views = views_of(colour_of(navigator), display);
+    const std::vector<std::string>& views = views_of(color_of(navigator), display);
     require_index(index, views.size(), "view");
     require(name, "name");
     *name = views[index].c_str();
@@ -282,9 +282,9 @@ brdfnav_status brdfnav_navigator_thumbnail(const brdfnav_navigator* navigator,
     require(rgba, "rgba");
     const Material m = material_from_struct(*material);
     check_thumbnail_material(navigator->navigator.database(), m);
-    const Colour& colour = colour_of(navigator);
-    colour.display.pipeline().validate(display, view);
-    const int size = colour.display.resolution();
+    const Color& color = color_of(navigator);
+    color.display.pipeline().validate(display, view);
+    const int size = color.display.resolution();
     const std::size_t needed = std::size_t(size) * std::size_t(size) * 4;
     if (capacity < needed)
       throw Error(ErrorCode::invalid_argument,
@@ -292,7 +292,7 @@ brdfnav_status brdfnav_navigator_thumbnail(const brdfnav_navigator* navigator,
                       std::to_string(size) + " x " + std::to_string(size) +
                       " x 4 = " + std::to_string(needed));
     // A processor the config cannot build is ErrorCode::io (the host's environment).
-    const ocio::Thumbnail t = colour.display.render(m, display, view);
+    const ocio::Thumbnail t = color.display.render(m, display, view);
     if (t.rgba.size() != needed)
       throw Error(ErrorCode::internal, "a thumbnail of " + std::to_string(t.rgba.size()) +
                                            " bytes, not " + std::to_string(needed));

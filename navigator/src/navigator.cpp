@@ -1,7 +1,7 @@
 #include <brdfnav/navigator/navigator.h>
 
 #include "closest.h"
-#include "colour.h"
+#include "color.h"
 #include "kmeans.h"
 #include "ring.h"
 #include "walk.h"
@@ -212,8 +212,8 @@ std::vector<Neighbor> Navigator::tab_offers(const Material& current, double radi
     case Tab::diffuse:
     case Tab::specular:
       return walk_all(tab,
-                      nav::colour_paths(current, tab == Tab::diffuse ? nav::ColourTerm::diffuse
-                                                                     : nav::ColourTerm::specular),
+                      nav::color_paths(current, tab == Tab::diffuse ? nav::ColorTerm::diffuse
+                                                                    : nav::ColorTerm::specular),
                       embedding, current, radius, exact);
     case Tab::models:
       return models_tab(current, radius, clusters, exact);

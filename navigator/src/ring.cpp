@@ -38,7 +38,7 @@ std::string lobe_words(const Neighbor& n) {
   return up ? "rougher" : "sharper";
 }
 
-std::string colour_words(const Neighbor& n) {
+std::string color_words(const Neighbor& n) {
   if (n.label == "L+") return "lighter";
   if (n.label == "L-") return "darker";
   if (n.label.rfind("ab+", 0) == 0) {
@@ -54,7 +54,7 @@ std::string words(const Neighbor& n) {
       return lobe_words(n);
     case Tab::diffuse:
     case Tab::specular:
-      return colour_words(n);
+      return color_words(n);
     case Tab::models:
       return "as " + std::string(model_info(n.material.model).title);
     case Tab::gallery:

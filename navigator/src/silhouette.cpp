@@ -35,8 +35,8 @@ std::vector<bool> rendered_mask(const Image& image) {
 
 // The mean colour of the pixels around (x, y) that `mask` covers; false when there is none. Their
 // colours are as rendered: only uncovered pixels take a colour.
-bool neighbours_colour(const Image& image, const std::vector<bool>& mask, int x, int y,
-                       float rgb[3]) {
+bool neighbours_color(const Image& image, const std::vector<bool>& mask, int x, int y,
+                      float rgb[3]) {
   double sum[3] = {0, 0, 0};
   int count = 0;
   for (int dy = -1; dy <= 1; ++dy) {
@@ -73,7 +73,7 @@ void antialias_sphere_silhouette(Image& image) {
       float* p = image.pixel(x, y);
       if (!covered[std::size_t(y) * std::size_t(n) + std::size_t(x)]) {
         float rgb[3];
-        if (coverage == 0.f || !neighbours_colour(image, covered, x, y, rgb)) continue;
+        if (coverage == 0.f || !neighbours_color(image, covered, x, y, rgb)) continue;
         for (int c = 0; c < 3; ++c) p[c] = rgb[c];
       }
       p[3] = coverage;

@@ -62,21 +62,21 @@ void write_png(OIIO::ImageBuf& img, const std::filesystem::path& png) {
 
 }  // namespace
 
-std::array<float, 3> plot_colour(std::size_t index) {
+std::array<float, 3> plot_color(std::size_t index) {
   // Tableau 10, then black and a sea green (the demo plots 12 settings).
-  static constexpr std::array<std::array<float, 3>, 12> kColours{{{0.12f, 0.47f, 0.71f},
-                                                                  {1.00f, 0.50f, 0.05f},
-                                                                  {0.17f, 0.63f, 0.17f},
-                                                                  {0.84f, 0.15f, 0.16f},
-                                                                  {0.58f, 0.40f, 0.74f},
-                                                                  {0.55f, 0.34f, 0.29f},
-                                                                  {0.89f, 0.47f, 0.76f},
-                                                                  {0.50f, 0.50f, 0.50f},
-                                                                  {0.74f, 0.74f, 0.13f},
-                                                                  {0.09f, 0.75f, 0.81f},
-                                                                  {0.00f, 0.00f, 0.00f},
-                                                                  {0.40f, 0.76f, 0.65f}}};
-  return kColours[index % kColours.size()];
+  static constexpr std::array<std::array<float, 3>, 12> kColors{{{0.12f, 0.47f, 0.71f},
+                                                                 {1.00f, 0.50f, 0.05f},
+                                                                 {0.17f, 0.63f, 0.17f},
+                                                                 {0.84f, 0.15f, 0.16f},
+                                                                 {0.58f, 0.40f, 0.74f},
+                                                                 {0.55f, 0.34f, 0.29f},
+                                                                 {0.89f, 0.47f, 0.76f},
+                                                                 {0.50f, 0.50f, 0.50f},
+                                                                 {0.74f, 0.74f, 0.13f},
+                                                                 {0.09f, 0.75f, 0.81f},
+                                                                 {0.00f, 0.00f, 0.00f},
+                                                                 {0.40f, 0.76f, 0.65f}}};
+  return kColors[index % kColors.size()];
 }
 
 void write_line_plot(const std::filesystem::path& png, const PlotSpec& spec,

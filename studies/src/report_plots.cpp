@@ -39,8 +39,8 @@ std::vector<double> pellacini_line(const std::vector<double>& d) {
 
 // A cumulative curve scaled onto that line (least squares), so that only its shape shows.
 PlotSeries scaled_curve(const std::string& label, const std::vector<double>& d,
-                        const CumulativeCurve& c, std::size_t colour) {
-  PlotSeries p{label + " (R^2 " + fixed(c.fit.r2, 3) + ")", d, {}, plot_colour(colour), true};
+                        const CumulativeCurve& c, std::size_t color) {
+  PlotSeries p{label + " (R^2 " + fixed(c.fit.r2, 3) + ")", d, {}, plot_color(color), true};
   const double scale = least_squares_scale(c.values, pellacini_line(d));
   for (double v : c.values) p.y.push_back(scale * v);
   return p;
@@ -78,7 +78,7 @@ void plot_fig3(Writer& w, const SceneStudy& s) {
     PlotSeries p{e.name + " (" + fixed(100 * e.agreement.within, 0) + "% within 20%)",
                  s.alpha,
                  {},
-                 plot_colour(k),
+                 plot_color(k),
                  true};
     for (std::size_t j = 0; j < s.alpha.size(); ++j)
       p.y.push_back(e.agreement.scale *
@@ -92,10 +92,10 @@ void plot_fig3(Writer& w, const SceneStudy& s) {
          series);
 }
 
-StripTile tile(const Image& image, const std::string& label, const ocio::ColorPipeline& colour) {
+StripTile tile(const Image& image, const std::string& label, const ocio::ColorPipeline& color) {
   return {{image.width, image.height,
-           colour.apply(image.rgba.data(), image.width, image.height, ocio::kDisplaySRGB,
-                        ocio::kViewStandard)},
+           color.apply(image.rgba.data(), image.width, image.height, ocio::kDisplaySRGB,
+                       ocio::kViewStandard)},
           label};
 }
 
@@ -103,7 +103,7 @@ StripTile tile(const Image& image, const std::string& label, const ocio::ColorPi
 // the two rows of images.
 void plot_spacing(Writer& w, const std::string& figure, const std::string& model,
                   const char* parameter, int digits, const SpacingStudy& s,
-                  const ocio::ColorPipeline& colour) {
+                  const ocio::ColorPipeline& color) {
   const auto normalised = [](const std::vector<double>& c) {
     std::vector<double> out;
     for (double v : c) out.push_back(v / c.back());
@@ -112,13 +112,13 @@ void plot_spacing(Writer& w, const std::string& figure, const std::string& model
   w.plot(figure, figure + "_cumulative.png",
          {figure + ": " + model + ", cumulative distance along " + parameter, parameter,
           "cumulative distance / total"},
-         {{"image metric", s.fine, normalised(s.cumulative_image), plot_colour(0), true},
-          {s.baseline.spacing, s.fine, normalised(s.cumulative_baseline), plot_colour(1), true}});
+         {{"image metric", s.fine, normalised(s.cumulative_image), plot_color(0), true},
+          {s.baseline.spacing, s.fine, normalised(s.cumulative_baseline), plot_color(1), true}});
   for (const SpacedRow* row : {&s.baseline, &s.image}) {
     std::vector<StripTile> tiles;
     for (std::size_t i = 0; i < row->values.size(); ++i)
       tiles.push_back(
-          tile(row->images[i], parameter + ("=" + fixed(row->values[i], digits)), colour));
+          tile(row->images[i], parameter + ("=" + fixed(row->values[i], digits)), color));
     w.strip(figure, figure + "_" + row->spacing + ".png",
             model + ", spaced by " + row->spacing + " (CV of image-metric steps " +
                 fixed(row->cv, 2) + ")",
@@ -131,7 +131,7 @@ void plot_embedding(Writer& w, const EmbeddingStudy& s) {
   for (const auto& [name, rows] : {std::pair{"anywhere", &s.anywhere}, {"on nodes", &s.on_nodes}})
     for (const bool p95 : {false, true}) {
       PlotSeries p{
-          std::string(p95 ? "p95, " : "median, ") + name, {}, {}, plot_colour(series.size()), true};
+          std::string(p95 ? "p95, " : "median, ") + name, {}, {}, plot_color(series.size()), true};
       for (const EmbeddingErrors& r : *rows)
         p.x.push_back(r.coefficients), p.y.push_back(p95 ? r.p95 : r.median);
       series.push_back(std::move(p));
@@ -146,12 +146,12 @@ void plot_embedding(Writer& w, const EmbeddingStudy& s) {
 
 std::vector<ReportFile> write_report_plots(const std::filesystem::path& dir,
                                            const ValidationResults& r,
-                                           const ocio::ColorPipeline& colour) {
+                                           const ocio::ColorPipeline& color) {
   Writer w{dir, {}};
   plot_fig2(w, r.fig2, r.fig3.entries.front().name, r.fig2_others);
   plot_fig3(w, r.fig3);
-  plot_spacing(w, "figure8", "Ward", kFig8Parameter, 3, r.fig8, colour);
-  plot_spacing(w, "figure9", "Lafortune n=800", kFig9Parameter, 4, r.fig9, colour);
+  plot_spacing(w, "figure8", "Ward", kFig8Parameter, 3, r.fig8, color);
+  plot_spacing(w, "figure9", "Lafortune n=800", kFig9Parameter, 4, r.fig9, color);
   if (r.embedding) plot_embedding(w, *r.embedding);
   return w.files;
 }

@@ -75,8 +75,8 @@ TEST_F(CliNavigate, NeighborsPrintsOneYamlListWithTheStableKeys) {
 // with renders of its own (`brdfnav render` at the database's map and resolution, whose render
 // quality is the CLI's default rather than the profile's, and `brdfnav distance`): within 5%.
 TEST_F(CliNavigate, ExactNeighborsAreAtTheRadiusOfIndependentRenders) {
-  const std::string colours = ",rho_d=0.2,rho_s=0.4";
-  const std::string spec = "ward:alpha_x=0.1,alpha_y=0.05" + colours;
+  const std::string colors = ",rho_d=0.2,rho_s=0.4";
+  const std::string spec = "ward:alpha_x=0.1,alpha_y=0.05" + colors;
   const CliResult r = neighbors("--material " + spec + " --radius 0.03 --tab lobe --exact");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const YAML::Node manifest = YAML::LoadFile((db() / "manifest.yaml").string());
@@ -88,7 +88,7 @@ TEST_F(CliNavigate, ExactNeighborsAreAtTheRadiusOfIndependentRenders) {
     if (item["flags"].size() > 0) continue;
     const YAML::Node params = item["material"]["params"];
     const std::string offer = "ward:alpha_x=" + params["alpha_x"].as<std::string>() +
-                              ",alpha_y=" + params["alpha_y"].as<std::string>() + colours;
+                              ",alpha_y=" + params["alpha_y"].as<std::string>() + colors;
     const fs::path image = file(item["label"].as<std::string>() + ".exr");
     ASSERT_EQ(run_cli(render + image.string() + " --material " + offer).exit_code, 0);
     const CliResult d = run_cli("distance " + file("current.exr").string() + " " + image.string());

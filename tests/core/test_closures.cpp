@@ -475,16 +475,16 @@ TEST_P(ClosurePointwise, NothingBelowTheHorizon) {
 TEST_P(ClosurePointwise, AGreyLobeIsTheSameInEveryChannel) {
   const Lobe lobe = make_lobe(GetParam().model, GetParam().params);
   std::mt19937_64 rng(kSeed);
-  int coloured = 0;
+  int colored = 0;
   for (int i = 0; i < 2000; ++i) {
     const Vec3 wi = random_upper_direction(rng), wo = random_upper_direction(rng);
     const Rgb f = std::visit([&](const auto& l) { return l.eval(wi, wo); }, lobe);
-    coloured += f[0] != f[1] || f[0] != f[2];
+    colored += f[0] != f[1] || f[0] != f[2];
   }
   if (std::visit([](const auto& l) { return GreyLobe<std::decay_t<decltype(l)>>; }, lobe))
-    EXPECT_EQ(coloured, 0);
+    EXPECT_EQ(colored, 0);
   else
-    EXPECT_GT(coloured, 0) << "a lobe the same in every channel may declare kGrey";
+    EXPECT_GT(colored, 0) << "a lobe the same in every channel may declare kGrey";
 }
 
 INSTANTIATE_TEST_SUITE_P(AllModels, ClosurePointwise, ::testing::ValuesIn(model_cases()),

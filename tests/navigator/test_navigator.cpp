@@ -15,7 +15,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "closest.h"
-#include "colour.h"
+#include "color.h"
 #include "ring.h"
 
 #include <cmath>
@@ -194,7 +194,7 @@ TEST(Navigator, AMaterialAtTheEndOfItsGridStaysThereTowardTheEnd) {
   EXPECT_FALSE(lobe[1].at_boundary);
 }
 
-TEST(Navigator, CielabOfReferenceColours) {
+TEST(Navigator, CielabOfReferenceColors) {
   const Vec3 white = lab_from_rec709(Rgb::Ones());
   EXPECT_NEAR(white.x(), 100, 1e-9);
   EXPECT_NEAR(white.y(), 0, 1e-9);
@@ -204,13 +204,13 @@ TEST(Navigator, CielabOfReferenceColours) {
   EXPECT_NEAR(red.x(), 53.24, 0.01);
   EXPECT_NEAR(red.y(), 80.09, 0.01);
   EXPECT_NEAR(red.z(), 67.20, 0.01);
-  const Rgb colour(0.3, 0.02, 4.5);
-  EXPECT_LT((rec709_from_lab(lab_from_rec709(colour)) - colour).abs().maxCoeff(), 1e-12);
+  const Rgb color(0.3, 0.02, 4.5);
+  EXPECT_LT((rec709_from_lab(lab_from_rec709(color)) - color).abs().maxCoeff(), 1e-12);
 }
 
 // Colour neighbours: at eps and valid, or clamped at the edge of the valid range (inside the
 // sphere); L+ brighter, L- darker, the a-b ones at their hue and at the current L.
-void expect_colour_tab(const Case& c, Tab tab) {
+void expect_color_tab(const Case& c, Tab tab) {
   const bool diffuse = tab == Tab::diffuse;
   const double max = diffuse ? kRhoDMax : kRhoSMax;
   const Rgb& before = diffuse ? c.material.rho_d : c.material.rho_s;
@@ -246,22 +246,22 @@ void expect_colour_tab(const Case& c, Tab tab) {
   }
 }
 
-TEST(Navigator, ColourNeighboursAreAtTheRadiusAndValid) {
+TEST(Navigator, ColorNeighboursAreAtTheRadiusAndValid) {
   for (const Case& c : cases(2, 3)) {
     SCOPED_TRACE(describe(c));
-    expect_colour_tab(c, Tab::diffuse);
-    expect_colour_tab(c, Tab::specular);
+    expect_color_tab(c, Tab::diffuse);
+    expect_color_tab(c, Tab::specular);
   }
 }
 
-TEST(Navigator, ColoursAtTheEdgeOfTheirRangeAreClamped) {
+TEST(Navigator, ColorsAtTheEdgeOfTheirRangeAreClamped) {
   Material m = default_material(ModelId::blinn_phong);
   m.rho_d = Rgb(0.98, 0.98, 0.98), m.rho_s = Rgb::Constant(0.2);
   const Case white{m, 0.05};
   const auto diffuse = by_label(navigator().neighbors(m, white.radius, Tab::diffuse));
   EXPECT_TRUE(diffuse.at("L+").clamped) << "L+ of near-white";
   EXPECT_FALSE(diffuse.at("L-").clamped) << "L- of near-white";
-  expect_colour_tab(white, Tab::diffuse);
+  expect_color_tab(white, Tab::diffuse);
   // Black: no other L and no hue is valid, so every neighbour but L+ is black itself (to the
   // bisection's resolution).
   m.rho_d = Rgb::Zero();

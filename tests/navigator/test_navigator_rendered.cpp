@@ -99,7 +99,7 @@ TEST_F(NavigatorRendered, LobeNeighboursLookEpsAway) {
   expect_issue_bounds(rendered_errors(Tab::lobe, 10));
 }
 
-TEST_F(NavigatorRendered, ColourNeighboursLookEpsAway) {
+TEST_F(NavigatorRendered, ColorNeighboursLookEpsAway) {
   // 5 materials per model: a colour tab has 10 directions to the lobe tab's 2 to 6.
   std::vector<double> errors = rendered_errors(Tab::diffuse, 5);
   const std::vector<double> specular = rendered_errors(Tab::specular, 5);

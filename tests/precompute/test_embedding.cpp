@@ -52,7 +52,7 @@ Material material(ModelId id, std::vector<double> params, Rgb rho_d, Rgb rho_s) 
 
 // On grid nodes and on q nodes nothing is interpolated: with a lossless basis the embedded
 // distance equals the metric between the rendered images, for coloured materials across models.
-TEST(Embedding, IsExactOnTheGridForColouredMaterials) {
+TEST(Embedding, IsExactOnTheGridForColoredMaterials) {
   Fixture& f = fixture();
   // rho_d / (rho_d + rho_s) = q nodes 1/64, 1/8 and 27/64 in the three channels.
   const Material a = material(ModelId::ward, {0.05, 0.12}, Rgb(0.01, 0.05, 0.27) * 0.5,
@@ -72,7 +72,7 @@ TEST(Embedding, IsExactOnTheGridForColouredMaterials) {
 }
 
 // Scaling every colour by t scales the cube-root image, and so the embedding, by cbrt(t).
-TEST(Embedding, ScalesWithTheCubeRootOfTheColours) {
+TEST(Embedding, ScalesWithTheCubeRootOfTheColors) {
   const ModelEmbedding& ward = fixture().of(ModelId::ward);
   const Material m = material(ModelId::ward, {0.07, 0.2}, Rgb(0.1, 0.2, 0.05), Rgb(0.3, 0.1, 0.4));
   Material scaled = m;

@@ -26,7 +26,7 @@ struct PlotSpec {
 };
 
 // Ten distinct line colours (Tableau 10), indexed modulo their count.
-std::array<float, 3> plot_colour(std::size_t index);
+std::array<float, 3> plot_color(std::size_t index);
 
 // Writes the plot atomically; throws std::runtime_error naming the file on failure.
 void write_line_plot(const std::filesystem::path& png, const PlotSpec& spec,

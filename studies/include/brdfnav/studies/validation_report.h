@@ -47,7 +47,7 @@ struct ReportFile {
 // Writes every PNG into `dir` (each atomically) and lists them (report_plots.cpp).
 std::vector<ReportFile> write_report_plots(const std::filesystem::path& dir,
                                            const ValidationResults& results,
-                                           const ocio::ColorPipeline& colour);
+                                           const ocio::ColorPipeline& color);
 
 // The two text files' contents (report_text.cpp).
 std::string report_yaml(const ValidationResults& results, const std::vector<ReportFile>& files);

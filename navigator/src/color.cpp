@@ -1,4 +1,4 @@
-#include "colour.h"
+#include "color.h"
 
 #include <brdfnav/core/cielab.h>
 
@@ -11,7 +11,7 @@ namespace {
 
 // Slices of a colour ray for the walk: the distance along a ray is smooth, so a few suffice to
 // find its first crossing of the sphere.
-constexpr int kColourSlices = 16;
+constexpr int kColorSlices = 16;
 // Samples of a ray when looking for where it leaves the valid range, then halvings.
 constexpr int kGamutScan = 256;
 constexpr int kBisections = 64;
@@ -43,14 +43,14 @@ double gamut_limit(const Vec3& lab, const Vec3& direction, double max) {
   return reach;
 }
 
-Path colour_path(const Material& m, ColourTerm term, const Vec3& direction, std::string label) {
-  const bool diffuse = term == ColourTerm::diffuse;
+Path color_path(const Material& m, ColorTerm term, const Vec3& direction, std::string label) {
+  const bool diffuse = term == ColorTerm::diffuse;
   const double max = diffuse ? kRhoDMax : kRhoSMax;
   const Vec3 lab = lab_from_rec709(diffuse ? m.rho_d : m.rho_s);
   const double end = gamut_limit(lab, direction, max);
   std::vector<double> breaks{0.0};
   if (end > 0)
-    for (int i = 1; i <= kColourSlices; ++i) breaks.push_back(end * i / kColourSlices);
+    for (int i = 1; i <= kColorSlices; ++i) breaks.push_back(end * i / kColorSlices);
   auto material = [m, diffuse, max, lab, direction](double s) {
     Material out = m;
     if (s <= 0) return out;  // exactly the current colour
@@ -63,14 +63,14 @@ Path colour_path(const Material& m, ColourTerm term, const Vec3& direction, std:
 
 }  // namespace
 
-std::vector<Path> colour_paths(const Material& m, ColourTerm term) {
+std::vector<Path> color_paths(const Material& m, ColorTerm term) {
   std::vector<Path> paths;
-  paths.push_back(colour_path(m, term, Vec3(1, 0, 0), "L+"));
-  paths.push_back(colour_path(m, term, Vec3(-1, 0, 0), "L-"));
+  paths.push_back(color_path(m, term, Vec3(1, 0, 0), "L+"));
+  paths.push_back(color_path(m, term, Vec3(-1, 0, 0), "L-"));
   for (int degrees = 0; degrees < 360; degrees += 45) {
     const double angle = degrees * std::numbers::pi / 180;
-    paths.push_back(colour_path(m, term, Vec3(0, std::cos(angle), std::sin(angle)),
-                                "ab+" + std::to_string(degrees)));
+    paths.push_back(color_path(m, term, Vec3(0, std::cos(angle), std::sin(angle)),
+                               "ab+" + std::to_string(degrees)));
   }
   return paths;
 }
