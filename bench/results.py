@@ -133,6 +133,11 @@ class Target:
         self.pending = pending  # the figure shown until the first run
 
 
+def render_targets(group, px, limit_ms):
+    return [Target(f"{group}.{m}", group, f"{m}: ms per image at {px} px <= {limit_ms} ms",
+                   render_speed(m, limit_ms)) for m in MODELS]
+
+
 TARGETS = [
     Target("host.libraries", "host", "a host's shared libraries (`ldd`) <= 12",
            below("libraries", 12, "", digits=3)),
@@ -145,16 +150,10 @@ TARGETS = [
            below(f"eval_{m}_ns", limit, "ns"))
     for m, limit in [("blinn_phong", 50), ("ward", 50), ("cook_torrance", 50), ("lafortune", 50),
                      ("he", 1000), ("ggx", 50)]
-] + [
-    Target(f"render.{m}", "render", f"{m}: ms per image at 128 px <= 200 ms",
-           render_speed(m, 200)) for m in MODELS
-] + [
+] + render_targets("render", 128, 200) + [
     Target("render.accuracy", "render", "accuracy ratio at 128 px <= 0.10, every setting",
            largest_ratio),
-] + [
-    Target(f"render320.{m}", "render320", f"{m}: ms per image at 320 px <= 1 s",
-           render_speed(m, 1000)) for m in MODELS
-] + [
+] + render_targets("render320", 320, 1000) + [
     Target("accuracy320", "accuracy320", "accuracy ratio at 320 px <= 0.10, every setting (slow)",
            largest_ratio),
     Target("fits", "fits", "conversion fit, mean <= 20 ms (one thread)",
