@@ -97,6 +97,35 @@ class Results(unittest.TestCase):
         self.assertEqual(list(rows), [t.id for t in results.TARGETS])
         self.assertEqual(rows["render.ward"][2:4], ["not measured yet", "-"])
 
+    def test_render_and_fidelity_figures(self):
+        render = {f"{m}_alone_ms": 150.0 for m in results.MODELS}
+        render.update({f"{m}_max_ratio": 0.05 for m in results.MODELS})
+        render.update({"he_alone_ms": 330.0, "he_batched_ms": 95.0, "ward_grid_ms": 80.0,
+                       "ggx_alone_ms": 900.0, "lafortune_max_ratio": 0.12})
+        self.put("render.json", {"bench": "render", "figures": render})
+        fidelity = {}
+        for m in results.MODELS:
+            fidelity.update({f"{m}_thumbnail_median_eps": 0.01, f"{m}_thumbnail_worst_eps": 0.02})
+            for tab in ("lobe", "diffuse", "specular"):  # no models tab: no unflagged offer
+                fidelity.update({f"{m}_{tab}_step_median": 0.01, f"{m}_{tab}_step_p90": 0.02})
+        fidelity.update({"he_lobe_step_median": 0.056, "he_specular_step_p90": 0.09,
+                         "lafortune_thumbnail_worst_eps": 21.7})
+        self.put("fidelity.json", {"bench": "fidelity", "figures": fidelity})
+        for group in ("render", "fidelity"):
+            self.put(f"{group}.stamp.json", STAMP)
+        self.assertEqual(self.main("render", "fidelity")[0], 0)
+        self.assertEqual(self.row("render.he")[2:4], ["95 ms (alone 330 ms)", "met"])
+        self.assertEqual(self.row("render.ward")[2:4], ["80 ms (alone 150 ms)", "met"])
+        self.assertEqual(self.row("render.ggx")[2:4], ["900 ms", "**not met**"])
+        self.assertEqual(self.row("render.accuracy")[2:4], ["0.120 (lafortune)", "**not met**"])
+        self.assertEqual(self.row("fidelity.thumbnails.lafortune")[2:4],
+                         ["0.010 / 21.700 eps", "**not met**"])
+        self.assertEqual(self.row("fidelity.steps.he")[2:4],
+                         ["worst tab lobe: 5.6 % / 2.0 %", "**not met**"])
+        self.assertEqual(self.row("fidelity.steps.ward")[2:4],
+                         ["worst tab lobe: 1.0 % / 2.0 %", "met"])
+        self.assertEqual(self.row("render320.ward")[2], "not measured yet")
+
     def test_a_pipe_in_a_cell_survives_the_round_trip(self):
         self.assertEqual(self.main("host")[0], 0)
         self.assertEqual(self.row("closures.eval.he")[7], "`a | b`")
