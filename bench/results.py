@@ -555,6 +555,7 @@ def main(argv=None):
                 write_json(out / f"{group}.stamp.json",
                            {**before, "machine": f"{before['machine']} -> {after:.1f}",
                             "command": command})
+        updated = 0
         for t in targets:
             if (out / f"{t.group}.skipped").exists():
                 continue  # its row stays as it was
@@ -567,10 +568,11 @@ def main(argv=None):
                 figure, met = t.check(figures)
             except BenchError as e:
                 raise BenchError(f"{out / t.group}.*: {t.id}: {e}") from None
+            updated += 1
             rows[t.id] = [t.id, t.text, figure, "met" if met else "**not met**", s["date"],
                           s["commit"], s["machine"], f"`{s['command']}`"]
         write_table(args.results, head, rows, tail)
-        print(f"bench/results.py: {len(targets)} rows of {args.results} rewritten", file=sys.stderr)
+        print(f"bench/results.py: {updated} rows of {args.results} rewritten", file=sys.stderr)
     except BenchError as e:
         print(f"bench/results.py: {e}", file=sys.stderr)
         return 1
