@@ -358,10 +358,12 @@ def run_group(group, args, out):
             return None  # a later version of it has the option; until then the row waits
         memory = ring_run(cli, args.db, extra, out / f"{group}.txt")
         write_json(out / f"{group}.memory.json", memory)
-        cmd = ["brdfnav", "serve", "--db", args.db, "&", "bench/ring_latency.py", "--exact", *extra]
+        return shlex.join(["bin/brdfnav", "serve", "--db", "DB"]) + " & " + shlex.join(
+            ["bench/ring_latency.py", "--exact", *extra])
     else:
         raise AssertionError(group)
-    return shlex.join(cmd).replace(str(b) + "/", "")
+    # As the table shows it: the build directory left out, the database named DB.
+    return shlex.join(["DB" if c == args.db else c for c in cmd]).replace(str(b) + "/", "")
 
 
 def write_json(path, value):
@@ -525,8 +527,9 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("names", nargs="*", metavar="NAME", help="groups or target ids")
     parser.add_argument("--build", default=os.environ.get("BRDFNAV_BUILD_DIR", ROOT / "build"))
-    parser.add_argument("--db", default=os.environ.get("BRDFNAV_BENCH_DB", "/work/db-default"),
-                        help="the default-profile database the navigator's groups read")
+    parser.add_argument("--db", default=os.environ.get("BRDFNAV_BENCH_DB", str(ROOT / "out/db-default")),
+                        help="the default-profile database the navigator's groups read "
+                        "(default: the one ./run demo builds)")
     parser.add_argument("--results", default=ROOT / "bench/RESULTS.md", type=Path)
     parser.add_argument("--slow", action="store_true", help="also the slow groups: " +
                         ", ".join(sorted(SLOW)))
