@@ -527,7 +527,8 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("names", nargs="*", metavar="NAME", help="groups or target ids")
     parser.add_argument("--build", default=os.environ.get("BRDFNAV_BUILD_DIR", ROOT / "build"))
-    parser.add_argument("--db", default=os.environ.get("BRDFNAV_BENCH_DB", str(ROOT / "out/db-default")),
+    parser.add_argument("--db",
+                        default=os.environ.get("BRDFNAV_BENCH_DB", str(ROOT / "out/db-default")),
                         help="the default-profile database the navigator's groups read "
                         "(default: the one ./run demo builds)")
     parser.add_argument("--results", default=ROOT / "bench/RESULTS.md", type=Path)

@@ -14,8 +14,9 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
 import results  # noqa: E402
 
-OLD_ROW = ("| navigator.lobe | lobe tab query p99 <= 1 ms | 0.524 ms | met | 2026-12-06 10:00 | e83a27a "
-           "| Intel(R) Xeon(R) Processor, 2 cores, load 0.3 -> 0.5 | `brdfnav bench navigator` |")
+OLD_ROW = ("| navigator.lobe | lobe tab query p99 <= 1 ms | 0.524 ms | met | 2026-12-06 10:00 "
+           "| e83a27a | Intel(R) Xeon(R) Processor, 2 cores, load 0.3 -> 0.5 "
+           "| `brdfnav bench navigator` |")
 TABLE = f"""# Benchmark results
 
 Before the table.
@@ -24,7 +25,7 @@ Before the table.
 | id | target | figure | met | date | commit | machine | command |
 |---|---|---|---|---|---|---|---|
 {OLD_ROW}
-| closures.eval.he | He closure eval | 79 ns | met | 2026-12-06 09:00 | 38b5aef | old machine | `a \\| b` |
+| closures.eval.he | He eval | 79 ns | met | 2026-12-06 09:00 | 38b5aef | old CPU | `a \\| b` |
 {results.END}
 
 ## How to read it
