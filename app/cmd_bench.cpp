@@ -1,8 +1,10 @@
 // `brdfnav bench render`: the pre-renderer's speed and accuracy (docs/RENDERER.md) on this machine,
-// as the Markdown table bench/RESULTS.md records; `brdfnav bench navigator`: the neighbour service;
-// `brdfnav bench fits`: the conversion fits; `brdfnav bench load`: concurrent queries. The
-// navigator's, load and fidelity benchmarks are bench/cli's (brdfnav::cli_benchmarks).
+// as Markdown tables; `brdfnav bench navigator`: the neighbour service; `brdfnav bench fits`: the
+// conversion fits; `brdfnav bench load`: concurrent queries. The navigator's, load and fidelity
+// benchmarks are bench/cli's (brdfnav::cli_benchmarks). With --json FILE, render, fits, navigator
+// and fidelity also write the figures bench/results.py compares with their targets.
 #include "bench_fidelity.h"
+#include "bench_figures.h"
 #include "bench_load.h"
 #include "bench_navigator.h"
 #include "command_options.h"
@@ -12,6 +14,7 @@
 #include <brdfnav/precompute/fit.h>
 #include <brdfnav/studies/render_accuracy.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -28,6 +31,7 @@ struct BenchOptions {
   int repeats = 3;
   bool accuracy = true;
   bool anisotropic = false;
+  std::string json;  // where to write the figures, if anywhere
 };
 
 // Mean wall-clock milliseconds per image of render(), called `repeats` times, each making
@@ -74,10 +78,12 @@ std::optional<FresnelBatch> fresnel_batch(const AccuracySetting& s) {
 
 // The precompute's images along each model's Fresnel parameter (fresnel_batch): ms per image
 // rendered alone and rendered together in one pass (Renderer::specular of a span).
-void fresnel_batch_rows(Renderer& renderer, int repeats, const std::string& model) {
+void fresnel_batch_rows(Renderer& renderer, int repeats, const std::string& model,
+                        BenchFigures& figures) {
   std::printf(
       "\n| setting | batched parameter | ms per image, alone | ... in one pass | ratio |\n");
   std::printf("|---|---|---|---|---|\n");
+  std::map<std::string, std::pair<double, int>> together_ms;  // per model: ms, settings
   for (const AccuracySetting& s : accuracy_settings()) {
     const ModelInfo& info = model_info(s.model);
     if (!model.empty() && model != info.name) continue;
@@ -90,21 +96,32 @@ void fresnel_batch_rows(Renderer& renderer, int repeats, const std::string& mode
       for (const Lobe& l : lobes) renderer.specular(l);
     });
     const double together = ms_of([&] { renderer.specular(lobes); });
+    together_ms[std::string(info.name)].first += together,
+        ++together_ms[std::string(info.name)].second;
     std::printf("| %s %s | %s (%zu nodes) | %.1f | %.1f | %.2f |\n", std::string(info.name).c_str(),
                 s.name.c_str(), std::string(info.params[batch->param].name).c_str(), lobes.size(),
                 alone, together, together / alone);
     std::fflush(stdout);
   }
+  for (const auto& [name, sum] : together_ms)
+    figures.add(name + "_batched_ms", sum.first / sum.second);
 }
 
 // Ward's grid (the table's 15 x 15 alphas) rendered in one pass, as the precompute renders it
 // (Renderer::ward_grid): ms per image.
-void ward_grid_rows(Renderer& renderer, int repeats) {
+void ward_grid_rows(Renderer& renderer, int repeats, BenchFigures& figures) {
   const ParamGrid grid(Ward::kParams);
   const double ms = ms_per_image(repeats, double(grid.node_count()),
                                  [&] { renderer.ward_grid(grid.axis(0), grid.axis(1)); });
+  figures.add("ward_grid_ms", ms);
   std::printf("\n| ward grid in one pass | ms per image |\n|---|---|\n| %zu x %zu | %.1f |\n",
               grid.axis(0).size(), grid.axis(1).size(), ms);
+}
+
+// The largest ratio of `results`, at least `so_far`.
+double max_ratio(const std::vector<AccuracyResult>& results, double so_far) {
+  for (const AccuracyResult& r : results) so_far = std::max(so_far, r.ratio());
+  return so_far;
 }
 
 // "alpha_x 0.011, alpha_y 0.010"
@@ -131,6 +148,9 @@ void run_render_bench(const BenchOptions& o) {
   std::printf("| model | setting | ms per image | accuracy ratio per parameter |\n");
   std::printf("|---|---|---|---|\n");
   std::map<ModelId, std::pair<double, int>> total_ms;  // ms, images
+  std::map<ModelId, double> worst_ratio;
+  BenchFigures figures("render");
+  figures.add("resolution", o.scene.resolution);
   auto wanted = [&](const AccuracySetting& s) {
     return o.model.empty() || o.model == model_info(s.model).name;
   };
@@ -144,6 +164,7 @@ void run_render_bench(const BenchOptions& o) {
       if (grid_images_differ(s.model)) images.push_back(grid_image(renderer, s));
       const auto results = measure_accuracy(images, reference, s);
       ratios = ratio_cell(results[0]);
+      for (const auto& r : results) worst_ratio[s.model] = max_ratio(r, worst_ratio[s.model]);
       if (results.size() > 1) ratios += " (in its grid: " + ratio_cell(results[1]) + ")";
     }
     std::printf("| %s | %s | %.1f | %s |\n", name.c_str(), s.name.c_str(), ms, ratios.c_str());
@@ -160,17 +181,22 @@ void run_render_bench(const BenchOptions& o) {
       if (wanted(s)) row(s);
     if (wanted(sliver_setting())) row(sliver_setting());
   }
-  fresnel_batch_rows(renderer, o.repeats, o.model);
-  if (o.model.empty() || o.model == "ward") ward_grid_rows(renderer, o.repeats);
+  fresnel_batch_rows(renderer, o.repeats, o.model, figures);
+  if (o.model.empty() || o.model == "ward") ward_grid_rows(renderer, o.repeats, figures);
   std::printf("\n| model | mean ms per image (smooth, medium, rough) |\n|---|---|\n");
-  for (const auto& [model, sum] : total_ms)
-    std::printf("| %s | %.1f |\n", std::string(model_info(model).name).c_str(),
-                sum.first / sum.second);
+  for (const auto& [model, sum] : total_ms) {
+    const std::string name(model_info(model).name);
+    std::printf("| %s | %.1f |\n", name.c_str(), sum.first / sum.second);
+    figures.add(name + "_alone_ms", sum.first / sum.second);
+  }
+  for (const auto& [model, ratio] : worst_ratio)
+    figures.add(std::string(model_info(model).name) + "_max_ratio", ratio);
+  figures.write(o.json);
 }
 
 // Fits of grid nodes of every model by every other model (default FitOptions, one thread): mean
 // milliseconds per fit into each target model, and overall.
-void run_fit_bench(int per_model) {
+void run_fit_bench(int per_model, const std::string& json) {
   std::printf(
       "| target model | fits | mean ms per fit | mean relative error |\n|---|---|---|---|\n");
   double total_ms = 0;
@@ -197,6 +223,13 @@ void run_fit_bench(int per_model) {
     total_ms += ms, total += count;
   }
   std::printf("\nall fits: %d, mean %.1f ms per fit (one thread)\n", total, total_ms / total);
+  BenchFigures figures("fits");
+  figures.add("mean_ms_per_fit", total_ms / total);
+  figures.write(json);
+}
+
+void add_json_option(CLI::App& command, std::string& path) {
+  command.add_option("--json", path, "Also write the figures to this JSON file (bench/results.py)");
 }
 
 }  // namespace
@@ -216,6 +249,7 @@ void add_bench_commands(CLI::App& app) {
   render->add_flag("!--no-accuracy", o->accuracy, "Skip the accuracy ratios (timing only)");
   render->add_flag("--anisotropic", o->anisotropic,
                    "Also the strongly anisotropic Ward settings (slow: their references are)");
+  add_json_option(*render, o->json);
   render->callback([o] {
     if (!o->model.empty() && !find_model(o->model))
       throw Error(ErrorCode::invalid_argument, "--model", "unknown model '" + o->model + "'");
@@ -238,6 +272,7 @@ void add_bench_commands(CLI::App& app) {
   nav->add_option("--cache-mib", n->cache_mib, "The thumbnails' image cache budget (MiB)")
       ->capture_default_str()
       ->check(CLI::Range(1, 65536));
+  add_json_option(*nav, n->json);
   nav->callback([n] { run_navigator_bench(*n); });
 
   auto* fidelity = bench->add_subcommand(
@@ -251,6 +286,7 @@ void add_bench_commands(CLI::App& app) {
   fidelity->add_option("--materials", f->materials, "Random materials per model")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
+  add_json_option(*fidelity, f->json);
   fidelity->callback([f] { run_fidelity_bench(*f); });
 
   auto* load = bench->add_subcommand(
@@ -267,10 +303,12 @@ void add_bench_commands(CLI::App& app) {
 
   auto* fits = bench->add_subcommand("fits", "Time the model-to-model conversion fits (paper, 4)");
   auto per_model = std::make_shared<int>(8);
+  auto fits_json = std::make_shared<std::string>();
   fits->add_option("--per-model", *per_model, "Source grid nodes per model and target")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
-  fits->callback([per_model] { run_fit_bench(*per_model); });
+  add_json_option(*fits, *fits_json);
+  fits->callback([per_model, fits_json] { run_fit_bench(*per_model, *fits_json); });
 }
 
 }  // namespace brdfnav::cli

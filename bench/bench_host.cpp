@@ -1,9 +1,10 @@
-// brdfnav_bench_host HOST [RUNS]: what a host program costs as a whole process, the figures a
-// renderer pays for loading brdfnav: the shared libraries `ldd HOST` lists, and over RUNS runs
-// (default 50, after 3 unmeasured ones that warm the page cache) the median and 90th percentile
-// wall time from spawn to exit and the largest peak resident set (wait4's ru_maxrss). The targets
-// of a plugin a production renderer can load: at most 12 libraries, a median of at most 30 ms and a
-// peak of at most 12 MB, for bench/host_one_closure.c.
+// brdfnav_bench_host [--json FILE] HOST [RUNS]: what a host program costs as a whole process, the
+// figures a renderer pays for loading brdfnav: the shared libraries `ldd HOST` lists, and over RUNS
+// runs (default 50, after 3 unmeasured ones that warm the page cache) the median and 90th
+// percentile wall time from spawn to exit and the largest peak resident set (wait4's ru_maxrss).
+// The targets of a plugin a production renderer can load: at most 12 libraries, a median of at most
+// 30 ms and a peak of at most 12 MB, for bench/host_one_closure.c. --json FILE also writes the
+// figures for bench/results.py (which holds those targets for the table of bench/RESULTS.md).
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -13,6 +14,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -66,11 +68,32 @@ const char* verdict(bool met) {
   return met ? "met" : "NOT met";
 }
 
+// The figures as one JSON object, written beside `path` and renamed onto it, so that the runner
+// never reads half a file.
+void write_json(const std::string& path, int libraries, double median, double p90,
+                double max_peak) {
+  const std::string temp = path + ".tmp";
+  {
+    std::ofstream out(temp);
+    out << "{\"bench\": \"host\", \"figures\": {\"libraries\": " << libraries
+        << ", \"wall_median_ms\": " << median << ", \"wall_p90_ms\": " << p90
+        << ", \"peak_rss_mib\": " << max_peak << "}}\n";
+    if (!out.flush()) throw std::runtime_error(temp + ": cannot write it");
+  }
+  if (std::rename(temp.c_str(), path.c_str()) != 0)
+    throw std::runtime_error(path + ": cannot rename " + temp + " onto it");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::string json;
+  if (argc > 2 && std::string(argv[1]) == "--json") {
+    json = argv[2];
+    argv += 2, argc -= 2;
+  }
   if (argc < 2 || argc > 3) {
-    std::fprintf(stderr, "usage: %s HOST [RUNS]\n", argv[0]);
+    std::fprintf(stderr, "usage: brdfnav_bench_host [--json FILE] HOST [RUNS]\n");
     return 2;
   }
   const std::string host = argv[1];
@@ -98,6 +121,7 @@ int main(int argc, char** argv) {
     std::printf("| wall time, 90th percentile | %.2f ms | - |\n", p90);
     std::printf("| peak RSS, largest | %.2f MiB | <= 12 MB: %s |\n", max_peak,
                 verdict(max_peak * 1.048576 <= 12));
+    if (!json.empty()) write_json(json, libraries, median, p90, max_peak);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "brdfnav_bench_host: %s\n", e.what());
     return 1;

@@ -1,7 +1,7 @@
 // The embedding's matrix products (precompute/src/pca.cpp) on their block shapes at the default
 // profile's size, through Eigen and through OpenBLAS's sgemm, one thread each: the ratio behind
 // pca.cpp's use of OpenBLAS. Then the whole uncentered PCA on a synthetic matrix of that height.
-// Results: bench/RESULTS.md.
+// No target of its own; figures in docs/DATABASE.md, Build time and memory.
 #include <benchmark/benchmark.h>
 #include <brdfnav/precompute/pca.h>
 #include <cblas.h>

@@ -7,6 +7,7 @@
 //   at a colour limit or beyond the radius do not aim at eps and are counted apart.
 #include "bench_fidelity.h"
 
+#include "bench_figures.h"
 #include "bench_navigator.h"
 #include "exact_thumbnails.h"
 
@@ -35,13 +36,16 @@ const char* verdict(bool met) {
   return met ? "met" : "NOT met";
 }
 
-void print_steps(const std::string& model, Tab tab, const Errors& e) {
+void print_steps(const std::string& model, Tab tab, const Errors& e, BenchFigures& figures) {
   if (e.values.empty()) {
     std::printf("| %s | %s | 0 | - | - | %d | - |\n", model.c_str(),
                 std::string(tab_name(tab)).c_str(), e.flagged);
     return;
   }
   const double median = quantile(e.values, 0.5), p90 = quantile(e.values, 0.9);
+  const std::string key = model + "_" + std::string(tab_name(tab));
+  figures.add(key + "_step_median", median);
+  figures.add(key + "_step_p90", p90);
   std::printf("| %s | %s | %zu | %.1f%% | %.1f%% | %d | %s |\n", model.c_str(),
               std::string(tab_name(tab)).c_str(), e.values.size(), 100 * median, 100 * p90,
               e.flagged, verdict(median <= 0.05 && p90 <= 0.10));
@@ -89,9 +93,12 @@ void run_fidelity_bench(const FidelityBenchOptions& o) {
               o.db.c_str(), manifest.profile.c_str(), manifest.resolution, o.radius, o.materials,
               o.exact ? "steps moved to eps by rendering (--exact)" : "steps from the embedding");
   std::printf("Thumbnails against exact renders (in eps; targets 0.05 median, 0.25 worst)\n\n");
+  BenchFigures figures(o.exact ? "fidelity_exact" : "fidelity");
   std::printf("| model | images | median | worst | verdict |\n|---|---:|---:|---:|---|\n");
   for (const auto& [model, errors] : thumbnail_errors) {
     const double median = quantile(errors, 0.5), worst = quantile(errors, 1.0);
+    figures.add(model + "_thumbnail_median_eps", median);
+    figures.add(model + "_thumbnail_worst_eps", worst);
     std::printf("| %s | %zu | %.3f | %.3f | %s |\n", model.c_str(), errors.size(), median, worst,
                 verdict(median <= 0.05 && worst <= 0.25));
   }
@@ -100,7 +107,8 @@ void run_fidelity_bench(const FidelityBenchOptions& o) {
       "90th percentile)\n\n");
   std::printf("| model | tab | offers | median | p90 | flagged | verdict |\n");
   std::printf("|---|---|---:|---:|---:|---:|---|\n");
-  for (const auto& [key, errors] : steps) print_steps(key.first, key.second, errors);
+  for (const auto& [key, errors] : steps) print_steps(key.first, key.second, errors, figures);
+  figures.write(o.json);
 }
 
 }  // namespace brdfnav::cli

@@ -11,6 +11,7 @@ struct FidelityBenchOptions {
   double radius = 0.03;  // eps of the steps; the thumbnails' errors are given in eps too
   int materials = 4;     // random materials per model
   bool exact = false;    // the offers moved to eps by rendering (ExactSteps), as serve does
+  std::string json;      // where to write the figures (BenchFigures), if anywhere
 };
 // Per model: the thumbnails' distance to an exact render of their material (median and worst, in
 // eps), and per tab the offers' exact rendered distance from the current material against eps

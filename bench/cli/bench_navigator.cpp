@@ -2,6 +2,8 @@
 // OCIO, and the resident memory with a database open (the navigator's targets), on this machine.
 #include "bench_navigator.h"
 
+#include "bench_figures.h"
+
 #include <brdfnav/core/statistics.h>
 #include <brdfnav/navigator/navigator.h>
 #include <brdfnav/navigator/thumbnails.h>
@@ -70,6 +72,9 @@ void run_navigator_bench(const NavigatorBenchOptions& o) {
   const double before = resident_mib();
   const auto start = Clock::now();
   const Navigator navigator = Navigator::open(o.db);
+  BenchFigures figures("navigator");
+  figures.add("rss_before_open_mib", before);
+  figures.add("rss_open_mib", resident_mib());
   std::printf(
       "database %s (profile %s, %d x %d): opened in %.0f ms, resident memory %.1f MiB "
       "(%.1f MiB before opening)\n\n",
@@ -86,6 +91,7 @@ void run_navigator_bench(const NavigatorBenchOptions& o) {
       ms.push_back(ms_since(t));
     }
     const Percentiles p = percentiles(ms);
+    figures.add(std::string(tab_name(tab)) + "_p99_ms", p.p99);
     std::printf("| %s | %zu | %.3f | %.3f | %.3f |\n", std::string(tab_name(tab)).c_str(),
                 ms.size(), p.median, p.p99, p.max);
   }
@@ -106,6 +112,9 @@ void run_navigator_bench(const NavigatorBenchOptions& o) {
     }
   }
   const Percentiles c = percentiles(cold), w = percentiles(warm);
+  figures.add("thumbnails_first_p99_ms", c.p99);
+  figures.add("thumbnails_cached_p99_ms", w.p99);
+  figures.add("rss_after_mib", resident_mib());
   std::printf(
       "\n10 thumbnails at %d x %d through OCIO (%s / %s), per lobe tab scaled to 10, image cache "
       "%d MiB:\n"
@@ -113,6 +122,7 @@ void run_navigator_bench(const NavigatorBenchOptions& o) {
       "median %.1f ms, p99 %.1f ms\nresident memory after: %.1f MiB\n",
       o.thumbnail_size, o.thumbnail_size, display.c_str(), view.c_str(), o.cache_mib, c.median,
       c.p99, w.median, w.p99, resident_mib());
+  figures.write(o.json);
 }
 
 }  // namespace brdfnav::cli

@@ -16,6 +16,7 @@ struct NavigatorBenchOptions {
   int materials = 40;  // random materials per model
   int thumbnail_size = 128;
   int cache_mib = int(Thumbnails::kDefaultCacheBytes >> 20);
+  std::string json;  // where to write the figures (BenchFigures), if anywhere
 };
 void run_navigator_bench(const NavigatorBenchOptions& options);
 

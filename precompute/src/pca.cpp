@@ -27,7 +27,7 @@ std::size_t blocks(std::size_t n, std::size_t size) {
 
 // c = op(a) b + beta c, through OpenBLAS's sgemm: the products below are most of the embedding's
 // cost, and its kernels, chosen for the CPU at run time, ran 2.5 times as fast as Eigen's
-// (built for the baseline x86-64) on this machine (bench/RESULTS.md). The threads are
+// (built for the baseline x86-64) on this machine (docs/DATABASE.md). The threads are
 // parallel_for's, each product inside one task: OpenBLAS runs each call on its caller's thread
 // (its pthreads build, which allows concurrent calls, with its own thread count set to 1).
 void gemm(bool transpose_a, const Eigen::Ref<const MatrixXf>& a,

@@ -2,6 +2,8 @@
 // leave nothing behind; `brdfnav bench render`'s tables at a tiny size.
 #include "app/cli_runner.h"
 
+#include <brdfnav/core/atomic_file.h>
+#include <brdfnav/core/models.h>
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -90,13 +92,32 @@ TEST(CliRender, DistanceRejectsMismatchedImages) {
 
 // Each model's settings, and the batch rows for the models whose lobes the renderer batches along
 // their Fresnel parameter: Cook-Torrance along f0, He along eta, none for Ward (its grid instead).
+// --json writes the figures bench/results.py reads (bench/cli/bench_figures.h), one per model.
 TEST(CliBenchRender, ReportsEveryModelAndTheFresnelBatches) {
-  const auto r = run_cli("bench render --res 8 --repeats 1 --no-accuracy");
+  TempDir dir;
+  const fs::path json = dir.path / "render.json";
+  const auto r = run_cli("bench render --res 8 --repeats 1 --no-accuracy --json " + json.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* row : {"| blinn_phong | smooth |", "| ward | medium |", "| lafortune | rough |",
                           "| cook_torrance smooth | f0 (5 nodes) |", "| he rough | eta (5 nodes) |",
                           "| ward grid in one pass |"})
     EXPECT_NE(r.out.find(row), std::string::npos) << row << "\n" << r.out;
+  const std::string figures = read_file(json);
+  EXPECT_EQ(figures.rfind("{\"bench\": \"render\", \"figures\": {\"resolution\": 8, ", 0), 0u)
+      << figures;
+  for (const ModelInfo& info : models()) {
+    const std::string key = std::string("\"").append(info.name).append("_alone_ms\": ");
+    EXPECT_NE(figures.find(key), std::string::npos) << figures;
+  }
+  for (const char* key :
+       {"\"he_batched_ms\": ", "\"cook_torrance_batched_ms\": ", "\"ward_grid_ms\": "})
+    EXPECT_NE(figures.find(key), std::string::npos) << key << figures;
+  EXPECT_EQ(figures.find("_max_ratio"), std::string::npos) << "--no-accuracy: " << figures;
+  // A --json file that cannot be written fails the command, naming it.
+  const auto unwritable =
+      run_cli("bench fits --per-model 1 --json " + (dir.path / "no" / "fits.json").string());
+  EXPECT_NE(unwritable.exit_code, 0);
+  EXPECT_NE(unwritable.err.find("fits.json"), std::string::npos) << unwritable.err;
   const auto ward = run_cli("bench render --res 8 --repeats 1 --no-accuracy --model ward");
   ASSERT_EQ(ward.exit_code, 0) << ward.err;
   EXPECT_EQ(ward.out.find("(5 nodes)"), std::string::npos) << ward.out;

@@ -24,9 +24,9 @@ const std::vector<AccuracySetting>& accuracy_settings();
 // Strongly anisotropic Ward lobes, beyond the three settings per model above, which bend far from
 // the ellipse around their peak (the quadrature's window follows their slopes: docs/RENDERER.md).
 const std::vector<AccuracySetting>& anisotropic_settings();
-// Ward 0.5 x 0.005, whose window is a sliver as long as a hemisphere and 1/100 as wide: the
-// per-pixel node budget (RenderQuality::max_nodes) makes its nodes coarser than its narrow side
-// and blurs it across, so it is far from 0.1 (bench/RESULTS.md). Benchmarked, not tested.
+// Ward 0.5 x 0.005, whose window is a sliver as long as a hemisphere and 1/100 as wide: it fills
+// the per-pixel node budget (RenderQuality::max_nodes), and its reference takes minutes at
+// 128 x 128 (its ratios: docs/RENDERER.md, Accuracy). Benchmarked, not tested.
 const AccuracySetting& sliver_setting();
 
 struct AccuracyResult {
