@@ -35,7 +35,7 @@ struct BlinnPhong {
   Rgb eval(const Vec3& wi, const Vec3& wo) const {
     if (wi.z() <= 0 || wo.z() <= 0) return Rgb::Zero();
     // cos_h^n as (cos_h^2)^(n/2) from the unnormalised H = wi + wo: skipping the square root
-    // and the normalisation saves a fifth of the call (bench/RESULTS.md).
+    // and the normalisation saves a fifth of the call (docs/CLOSURES.md, Cost).
     const Vec3 h = wi + wo;
     const double len2 = h.squaredNorm();
     if (len2 < 1e-24) return Rgb::Zero();

@@ -85,7 +85,7 @@ struct CookTorrance {
   std::optional<Terms> terms(const Vec3& wi, const Vec3& wo) const {
     if (wi.z() <= 0 || wo.z() <= 0) return std::nullopt;
     // Written with the unnormalised H = wi + wo to keep divisions off the critical path (eval()
-    // is about a third faster, bench/RESULTS.md): for unit wi, wo, wo.H = |H|^2 / 2, so
+    // is about a third faster, docs/CLOSURES.md, Cost): for unit wi, wo, wo.H = |H|^2 / 2, so
     // wi.h = wo.h = |H| / 2, 1 / cos_h^2 = |H|^2 / H.z^2, and the V-groove terms
     // 2 cos_h cos / (wo.h) are 4 H.z cos / |H|^2.
     const Vec3 hv = wi + wo;
