@@ -150,7 +150,7 @@ void run_render_bench(const BenchOptions& o) {
   std::map<ModelId, std::pair<double, int>> total_ms;  // ms, images
   std::map<ModelId, double> worst_ratio;
   BenchFigures figures("render");
-  figures.add("resolution", o.scene.resolution);
+  figures.add("resolution", o.setup.resolution);
   auto wanted = [&](const AccuracySetting& s) {
     return o.model.empty() || o.model == model_info(s.model).name;
   };
