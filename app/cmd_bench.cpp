@@ -96,8 +96,9 @@ void fresnel_batch_rows(Renderer& renderer, int repeats, const std::string& mode
       for (const Lobe& l : lobes) renderer.specular(l);
     });
     const double together = ms_of([&] { renderer.specular(lobes); });
-    together_ms[std::string(info.name)].first += together,
-        ++together_ms[std::string(info.name)].second;
+    auto& [sum, settings] = together_ms[std::string(info.name)];
+    sum += together;
+    ++settings;
     std::printf("| %s %s | %s (%zu nodes) | %.1f | %.1f | %.2f |\n", std::string(info.name).c_str(),
                 s.name.c_str(), std::string(info.params[batch->param].name).c_str(), lobes.size(),
                 alone, together, together / alone);

@@ -5,6 +5,8 @@
 // The targets of a plugin a production renderer can load: at most 12 libraries, a median of at most
 // 30 ms and a peak of at most 12 MB, for bench/host_one_closure.c. --json FILE also writes the
 // figures for bench/results.py (which holds those targets for the table of bench/RESULTS.md).
+#include "cli/bench_figures.h"
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -14,7 +16,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -68,22 +69,6 @@ const char* verdict(bool met) {
   return met ? "met" : "NOT met";
 }
 
-// The figures as one JSON object, written beside `path` and renamed onto it, so that the runner
-// never reads half a file.
-void write_json(const std::string& path, int libraries, double median, double p90,
-                double max_peak) {
-  const std::string temp = path + ".tmp";
-  {
-    std::ofstream out(temp);
-    out << "{\"bench\": \"host\", \"figures\": {\"libraries\": " << libraries
-        << ", \"wall_median_ms\": " << median << ", \"wall_p90_ms\": " << p90
-        << ", \"peak_rss_mib\": " << max_peak << "}}\n";
-    if (!out.flush()) throw std::runtime_error(temp + ": cannot write it");
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0)
-    throw std::runtime_error(path + ": cannot rename " + temp + " onto it");
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -121,7 +106,12 @@ int main(int argc, char** argv) {
     std::printf("| wall time, 90th percentile | %.2f ms | - |\n", p90);
     std::printf("| peak RSS, largest | %.2f MiB | <= 12 MB: %s |\n", max_peak,
                 verdict(max_peak * 1.048576 <= 12));
-    if (!json.empty()) write_json(json, libraries, median, p90, max_peak);
+    brdfnav::cli::BenchFigures figures("host");
+    figures.add("libraries", libraries);
+    figures.add("wall_median_ms", median);
+    figures.add("wall_p90_ms", p90);
+    figures.add("peak_rss_mib", max_peak);
+    figures.write(json);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "brdfnav_bench_host: %s\n", e.what());
     return 1;
