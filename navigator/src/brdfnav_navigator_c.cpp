@@ -188,10 +188,7 @@ brdfnav_status brdfnav_neighbors_get(const brdfnav_neighbors* list, size_t index
                                      brdfnav_neighbor* out) {
   return guarded([&] {
     require(list, "list");
-    if (index >= list->entries.size())
-      throw Error(ErrorCode::invalid_argument, "neighbour index " + std::to_string(index) +
-                                                   " is outside [0, " +
-                                                   std::to_string(list->entries.size()) + ")");
+    require_index(index, list->entries.size(), "neighbour");
     require(out, "out");
     const brdfnav_neighbors::Entry& e = list->entries[index];
     const Neighbor& n = e.neighbor;
