@@ -62,6 +62,32 @@ double ParamGrid::value_at(std::size_t d, double coordinate) const {
   return from_scale(spec, lo + (c - static_cast<double>(i)) * (hi - lo));
 }
 
+std::size_t ParamGrid::cell_count() const {
+  std::size_t n = 1;
+  for (const std::vector<double>& axis : axes_) n *= axis.size() - 1;
+  return n;
+}
+
+std::size_t ParamGrid::cell_index(std::span<const double> values) const {
+  std::size_t cell = 0, stride = 1;
+  for (std::size_t d = 0; d < axes_.size(); ++d) {
+    const std::size_t cells = axes_[d].size() - 1;
+    cell += std::min(static_cast<std::size_t>(grid_coordinate(d, values[d])), cells - 1) * stride;
+    stride *= cells;
+  }
+  return cell;
+}
+
+std::vector<double> ParamGrid::cell_midpoint(std::size_t cell) const {
+  std::vector<double> values(axes_.size());
+  for (std::size_t d = 0; d < axes_.size(); ++d) {
+    const std::size_t cells = axes_[d].size() - 1;
+    values[d] = value_at(d, static_cast<double>(cell % cells) + 0.5);
+    cell /= cells;
+  }
+  return values;
+}
+
 namespace {
 using AxisWeights = std::vector<std::pair<std::size_t, double>>;  // (node on the axis, weight)
 

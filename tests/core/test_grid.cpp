@@ -120,5 +120,24 @@ TEST(ParamGrid, CubicCornersOfATwoNodeAxisAreLinear) {
   EXPECT_NEAR(corners[1].weight, 0.5, 1e-12);
 }
 
+TEST(ParamGrid, CellsAreTheBoxesBetweenNodes) {
+  // Ward: alpha_x and alpha_y, 3 x 4 nodes on log axes -> 2 x 3 cells, alpha_x fastest.
+  const ParamGrid grid(model_info(ModelId::ward).params,
+                       {{0.01, 0.1, 1.0}, {0.01, 0.02, 0.04, 0.08}});
+  EXPECT_EQ(grid.cell_count(), 6u);
+  EXPECT_EQ(grid.cell_index(std::vector<double>{0.5, 0.03}), 1u + 2u * 1u);
+  // A value on a node belongs to the cell above it, the last node to the cell below.
+  EXPECT_EQ(grid.cell_index(std::vector<double>{0.1, 0.01}), 1u);
+  EXPECT_EQ(grid.cell_index(std::vector<double>{1.0, 0.08}), 1u + 2u * 2u);
+  // Outside the grid: clamped to its boxes.
+  EXPECT_EQ(grid.cell_index(std::vector<double>{5.0, 0.001}), 1u);
+  // The centre in grid coordinates: half-way on the log scale.
+  const std::vector<double> mid = grid.cell_midpoint(1u + 2u * 2u);
+  EXPECT_NEAR(mid[0], std::sqrt(0.1 * 1.0), 1e-12);
+  EXPECT_NEAR(mid[1], std::sqrt(0.04 * 0.08), 1e-12);
+  for (std::size_t c = 0; c < grid.cell_count(); ++c)
+    EXPECT_EQ(grid.cell_index(grid.cell_midpoint(c)), c);
+}
+
 }  // namespace
 }  // namespace brdfnav

@@ -34,6 +34,14 @@ class ParamGrid {
   // The inverse of grid_coordinate for coordinates in [0, size - 1].
   double value_at(std::size_t d, double coordinate) const;
 
+  // Cells: the boxes between neighbouring nodes, (size - 1) per axis, numbered like the nodes
+  // (first parameter fastest). The cell holding `values` (clamped into the grid; a value on a
+  // node belongs to the cell above it, the last node to the cell below), and the parameter
+  // values at a cell's centre in grid coordinates, where interpolation is farthest from nodes.
+  std::size_t cell_count() const;
+  std::size_t cell_index(std::span<const double> values) const;
+  std::vector<double> cell_midpoint(std::size_t cell) const;
+
   struct Corner {
     std::size_t node;
     double weight;
