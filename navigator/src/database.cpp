@@ -5,6 +5,7 @@
 #include <brdfnav/navigator/image.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 
@@ -19,11 +20,13 @@ namespace {
 // (or read forever).
 void check_files(const fs::path& dir, const Manifest& m) {
   const std::string manifest = (dir / db::kManifestFile).string();
-  const std::vector<std::string> expected = db::database_files(m.grids);
-  for (const std::string& f : expected)
+  const std::vector<std::string> required = db::database_files(m.grids),
+                                 optional = db::optional_database_files(m.grids);
+  for (const std::string& f : required)
     if (!m.files.contains(f)) throw DatabaseError(manifest + ": does not list the file " + f);
   for (const auto& [name, sha] : m.files)
-    if (!std::binary_search(expected.begin(), expected.end(), name))
+    if (!std::binary_search(required.begin(), required.end(), name) &&
+        !std::binary_search(optional.begin(), optional.end(), name))
       throw DatabaseError(manifest + ": lists the file " + name +
                           ", which is not part of a database of its grids");
   for (const auto& [name, sha] : m.files) {
@@ -101,6 +104,20 @@ ConversionTable load_conversion(const fs::path& dir, const ProfileGrid& a, Model
   return table;
 }
 
+// A model's blend check, when the manifest lists one: a distance per cell of its grid.
+std::optional<std::vector<float>> load_blend_check(const fs::path& dir, const Manifest& m,
+                                                   const ProfileGrid& g) {
+  const std::string name = db::blend_check_file(g.model);
+  if (!m.files.contains(name)) return std::nullopt;
+  const db::Table t = db::read_table(dir / name, std::uint32_t(g.grid.cell_count()), 1);
+  for (std::size_t c = 0; c < t.values.size(); ++c)
+    if (!std::isfinite(t.values[c]) || t.values[c] < 0)
+      throw DatabaseError((dir / name).string() + ": cell " + std::to_string(c) +
+                          " holds a distance of " + std::to_string(t.values[c]) +
+                          ", not a finite value >= 0");
+  return t.values;
+}
+
 std::size_t covered_count(const Image& image) {
   std::size_t n = 0;
   for (std::size_t i = 3; i < image.rgba.size(); i += 4) n += image.rgba[i] > 0.5f;
@@ -126,6 +143,7 @@ Database Database::open(const fs::path& dir) {
   db::read_table(dir / db::kBasisFile, std::uint32_t(covered_count(diffuse)), k);
   for (const ProfileGrid& a : m.grids) {
     db.embeddings_.push_back(db::read_model_embedding(dir, m.q_nodes, m.components, a));
+    if (auto check = load_blend_check(dir, m, a)) db.blend_errors_[a.model] = std::move(*check);
     for (const ProfileGrid& b : m.grids)
       if (b.model != a.model) db.conversions_.push_back(load_conversion(dir, a, b.model));
   }
@@ -142,6 +160,13 @@ const ConversionTable* Database::conversion(ModelId from, ModelId to) const {
   for (const ConversionTable& t : conversions_)
     if (t.from == from && t.to == to) return &t;
   return nullptr;
+}
+
+std::optional<double> Database::blend_error(const Material& m) const {
+  const auto it = blend_errors_.find(m.model);
+  const ModelEmbedding* e = embedding(m.model);
+  if (it == blend_errors_.end() || !e) return std::nullopt;
+  return it->second[e->grid().cell_index(m.params)];
 }
 
 fs::path Database::image_path(ModelId id, std::size_t node) const {

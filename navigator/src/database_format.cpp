@@ -182,6 +182,17 @@ std::vector<std::string> database_files(const std::vector<ProfileGrid>& grids) {
   return files;
 }
 
+std::string blend_check_file(ModelId id) {
+  return "previews/" + model_name(id) + ".f32";
+}
+
+std::vector<std::string> optional_database_files(const std::vector<ProfileGrid>& grids) {
+  std::vector<std::string> files;
+  for (const ProfileGrid& g : grids) files.push_back(blend_check_file(g.model));
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 void write_table(const std::filesystem::path& path, const Table& table) {
   std::string bytes(kTableMagic, sizeof kTableMagic);
   bytes.append(reinterpret_cast<const char*>(&table.rows), 4);

@@ -1,6 +1,5 @@
 #include <brdfnav/navigator/thumbnails.h>
 
-#include <brdfnav/core/cube_root.h>
 #include <brdfnav/core/parallel_for.h>
 
 #include <algorithm>
@@ -96,26 +95,13 @@ Image Thumbnails::render(const Material& m) const {
   std::vector<Key> keys{kDiffuse};
   for (const ParamGrid::Corner& c : corners) keys.push_back({static_cast<int>(m.model), c.node});
   const std::vector<std::shared_ptr<const Image>> images = this->images(keys);
-  const Image& diffuse = *images[0];
-  const std::size_t n = diffuse.rgba.size();
-  // Per RGBA lane: the alpha lane gets 0 from both terms and is set from the mask at the end.
-  const float rho_d[4] = {float(m.rho_d[0]), float(m.rho_d[1]), float(m.rho_d[2]), 0.f};
-  const float rho_s[4] = {float(m.rho_s[0]), float(m.rho_s[1]), float(m.rho_s[2]), 0.f};
-  // Single precision in flat loops the compiler vectorises: a He material blends 64 corners.
-  std::vector<float> root(n, 0.f), linear(n);
+  std::vector<const Image*> specular;
+  std::vector<double> weights;
   for (std::size_t k = 0; k < corners.size(); ++k) {
-    const float* d = diffuse.rgba.data();
-    const float* sp = images[k + 1]->rgba.data();
-    for (std::size_t i = 0; i < n; ++i) linear[i] = rho_d[i % 4] * d[i] + rho_s[i % 4] * sp[i];
-    const auto w = static_cast<float>(corners[k].weight);
-    for (std::size_t i = 0; i < n; ++i) root[i] += w * cube_root(linear[i]);
+    specular.push_back(images[k + 1].get());
+    weights.push_back(corners[k].weight);
   }
-  Image out(resolution_, resolution_);
-  for (std::size_t i = 0; i < n; ++i) {
-    const float r = std::max(root[i], 0.f);
-    out.rgba[i] = i % 4 == 3 ? diffuse.rgba[i] : r * r * r;
-  }
-  return out;
+  return blend_images(*images[0], specular, weights, m.rho_d, m.rho_s);
 }
 
 }  // namespace brdfnav

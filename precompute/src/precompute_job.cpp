@@ -4,6 +4,7 @@
 
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/core/parallel_for.h>
+#include <brdfnav/navigator/blend.h>
 #include <brdfnav/navigator/database_format.h>
 #include <brdfnav/precompute/image_output.h>
 #include <brdfnav/precompute/render.h>
@@ -141,6 +142,7 @@ class Job {
     }
     timed("embedding", [&] { embed(); });
     timed("fits", [&] { fit_conversions(); });
+    timed("blend check", [&] { check_blends(); });
     timed("manifest", [&] { finish(); });
   }
 
@@ -177,7 +179,8 @@ class Job {
     } else {
       fs::remove_all(work_);
     }
-    for (const char* dir : {"images", "embedding", "conversions"}) fs::create_directories(at(dir));
+    for (const char* dir : {"images", "embedding", "conversions", "previews"})
+      fs::create_directories(at(dir));
     for (const ProfileGrid& g : p_.grids)
       fs::create_directories(at("images/" + std::string(model_info(g.model).name)));
     write_file_atomic(settings_path, settings);
@@ -364,10 +367,53 @@ class Job {
     db::write_table(path, t);
   }
 
+  // The blend check (db::blend_check_file()): per cell of each grid, how far the thumbnails'
+  // blend of the node images is from an exact render at the cell's midpoint, rendered as the
+  // navigator's exact thumbnails are (Renderer::render). Lets a server show the blend as the
+  // final image where it is faithful (docs/NAVIGATION.md). A model's table is written once all
+  // its cells are measured; a resumed build keeps the finished ones.
+  void check_blends() const {
+    RenderOptions options;
+    options.threads = r_.threads;
+    options.quality = p_.quality;
+    Renderer renderer(env_, scene_, p_.resolution, options);
+    const Image diffuse = read_image(at(db::kDiffuseFile));
+    std::size_t total = 0, done = 0;
+    for (const ProfileGrid& g : p_.grids) total += g.grid.cell_count();
+    progress("blend check", 0, total);
+    for (const ProfileGrid& g : p_.grids) {
+      const fs::path path = at(db::blend_check_file(g.model));
+      if (fs::exists(path)) {
+        done += g.grid.cell_count();
+        progress("blend check", done, total);
+        continue;
+      }
+      std::vector<Image> nodes;
+      for (std::size_t n = 0; n < g.grid.node_count(); ++n)
+        nodes.push_back(read_image(at(db::image_file(g.model, n))));
+      db::Table t{std::uint32_t(g.grid.cell_count()), 1, {}};
+      for (std::size_t c = 0; c < g.grid.cell_count(); ++c) {
+        const Material m = node_material(g.model, g.grid.cell_midpoint(c));
+        std::vector<const Image*> images;
+        std::vector<double> weights;
+        for (const ParamGrid::Corner& k : g.grid.cubic_corners(m.params)) {
+          images.push_back(&nodes[k.node]);
+          weights.push_back(k.weight);
+        }
+        const Image blend = blend_images(diffuse, images, weights, m.rho_d, m.rho_s);
+        t.values.push_back(float(image_distance(blend, renderer.render(m))));
+        progress("blend check", ++done, total);
+      }
+      db::write_table(path, t);
+    }
+  }
+
   // Checksums every file, writes the manifest, drops what is not part of the database (the
   // settings, temporaries of an interrupted run) and renames the directory into place.
   void finish() {
-    const std::vector<std::string> files = db::database_files(p_.grids);
+    std::vector<std::string> files = db::database_files(p_.grids);
+    for (const std::string& f : db::optional_database_files(p_.grids))
+      if (fs::exists(at(f))) files.push_back(f);
     db::FileSums sums;
     std::size_t done = 0;
     for (const std::string& f : files) {

@@ -1,3 +1,5 @@
+#include <brdfnav/navigator/blend.h>
+#include <brdfnav/navigator/database_format.h>
 #include <brdfnav/precompute/database.h>
 #include <brdfnav/precompute/image_output.h>
 #include <brdfnav/precompute/render.h>
@@ -188,6 +190,76 @@ TEST(Database, ImageMetricFitsAreNoFartherThanTheBrdfSpaceFits) {
   }
   EXPECT_GE(study.ratio_median, 1 - 1e-5);
   EXPECT_GE(study.ratio_p90, study.ratio_median);
+}
+
+// The blend check holds, per cell, the distance between the blend of the node images and an
+// exact render at the cell's midpoint (rho_d = 0, rho_s = 1), rendered as exact thumbnails are.
+TEST(Database, RecordsTheBlendCheckOfEveryCell) {
+  const Database db = Database::open(fixture().db);
+  const Image diffuse = read_image(db.diffuse_path());
+  RenderOptions options;
+  options.quality = tiny_profile().quality;
+  Renderer renderer(fixture().env, fixture().scene, 8, options);
+  for (const ProfileGrid& g : db.manifest().grids) {
+    const std::string model(model_info(g.model).name);
+    ASSERT_TRUE(db.manifest().files.contains(db::blend_check_file(g.model))) << model;
+    std::vector<Image> nodes;
+    for (std::size_t n = 0; n < g.grid.node_count(); ++n)
+      nodes.push_back(read_image(db.image_path(g.model, n)));
+    for (std::size_t c = 0; c < g.grid.cell_count(); ++c) {
+      Material m = default_material(g.model);
+      m.params = g.grid.cell_midpoint(c);
+      m.rho_d = Rgb::Zero(), m.rho_s = Rgb::Ones();
+      std::vector<const Image*> images;
+      std::vector<double> weights;
+      for (const ParamGrid::Corner& k : g.grid.cubic_corners(m.params)) {
+        images.push_back(&nodes[k.node]);
+        weights.push_back(k.weight);
+      }
+      const double expected = image_distance(
+          blend_images(diffuse, images, weights, m.rho_d, m.rho_s), renderer.render(m));
+      EXPECT_GT(expected, 0.0) << model;  // between nodes the blend is not the render
+      // Any material of the cell gets its cell's check, whatever its colours.
+      m.rho_d = Rgb(0.2, 0.1, 0.05);
+      const std::optional<double> recorded = db.blend_error(m);
+      ASSERT_TRUE(recorded.has_value()) << model;
+      EXPECT_NEAR(*recorded, expected, 1e-6 + 1e-5 * expected) << model << " cell " << c;
+    }
+  }
+  EXPECT_FALSE(db.blend_error(default_material(ModelId::he)).has_value());  // not in the database
+}
+
+// A database built before the check opens, and vouches for no blend.
+TEST(Database, OpensWithoutBlendChecks) {
+  const fs::path dir = copy_of_reference("no_checks");
+  std::ifstream in(dir / "manifest.yaml");
+  std::string manifest, line;
+  while (std::getline(in, line))
+    if (line.find("previews/") == std::string::npos) manifest += line + "\n";
+  in.close();
+  write_bytes(dir / "manifest.yaml", manifest);
+  fs::remove_all(dir / "previews");
+  const Database db = Database::open(dir);
+  EXPECT_FALSE(db.blend_error(default_material(ModelId::ward)).has_value());
+}
+
+// A check of another grid's shape, or with a distance that is not one, is refused by name.
+TEST(Database, RejectsABlendCheckOfTheWrongShapeOrValue) {
+  const fs::path dir = copy_of_reference("bad_check");
+  const fs::path check = dir / db::blend_check_file(ModelId::ward);
+  const auto replace = [&](const db::Table& t) {
+    const std::string old_sha = file_sha1(check);
+    db::write_table(check, t);
+    replace_in_file(dir / "manifest.yaml", old_sha, file_sha1(check));
+  };
+  replace({2, 1, {0.001f, 0.002f}});  // the grid has one cell
+  std::string error = open_error(dir);
+  EXPECT_NE(error.find("previews/ward.f32"), std::string::npos) << error;
+  replace({1, 1, {std::nanf("")}});
+  error = open_error(dir);
+  EXPECT_NE(error.find("previews/ward.f32: cell 0"), std::string::npos) << error;
+  replace({1, 1, {-0.5f}});
+  EXPECT_NE(open_error(dir).find("not a finite value >= 0"), std::string::npos);
 }
 
 TEST(Database, RejectsAFlippedByteNamingTheFile) {

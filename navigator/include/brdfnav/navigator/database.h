@@ -7,11 +7,13 @@
 
 #include <brdfnav/core/error.h>
 #include <brdfnav/core/grid.h>
+#include <brdfnav/core/material.h>
 #include <brdfnav/core/models.h>
 #include <brdfnav/navigator/embedding.h>
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -87,6 +89,11 @@ class Database {
   const ConversionTable* conversion(ModelId from, ModelId to) const;
   std::filesystem::path image_path(ModelId id, std::size_t node) const;
   std::filesystem::path diffuse_path() const;
+  // The blend check of the grid cell holding `m`'s parameters (db::blend_check_file()): the image
+  // metric's distance between the thumbnails' blend and an exact render at the cell's midpoint,
+  // for the lobe alone (rho_d = 0, rho_s = 1: the hardest case for the cube root). nullopt when
+  // the database holds no check for the model (built before the check).
+  std::optional<double> blend_error(const Material& m) const;
 
  private:
   std::filesystem::path dir_;
@@ -94,6 +101,7 @@ class Database {
   std::string manifest_sha1_;
   std::vector<ModelEmbedding> embeddings_;
   std::vector<ConversionTable> conversions_;
+  std::map<ModelId, std::vector<float>> blend_errors_;  // per cell, of the models that have one
 };
 
 }  // namespace brdfnav

@@ -44,6 +44,13 @@ std::string coefficients_file(ModelId id);
 std::string conversion_file(ModelId from, ModelId to);
 // Every file of a database with these grids except the manifest, sorted.
 std::vector<std::string> database_files(const std::vector<ProfileGrid>& grids);
+// A model's blend check: one row per cell of its grid (ParamGrid::cell_index), one column, the
+// metric's distance between the blend of the database's images (blend_images()) and an exact
+// render at the cell's midpoint, for rho_d = 0 and rho_s = 1. The builder writes one per model;
+// databases built before the check have none, and are still complete.
+std::string blend_check_file(ModelId id);
+// The files a database of these grids may hold beyond database_files(): the blend checks, sorted.
+std::vector<std::string> optional_database_files(const std::vector<ProfileGrid>& grids);
 // The columns of a conversion table into `to`: one row per node of the source grid, holding
 // `to`'s parameters, scale RGB, relative error, image distance.
 std::size_t conversion_columns(ModelId to);

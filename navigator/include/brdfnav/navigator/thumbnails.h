@@ -8,6 +8,7 @@
 #pragma once
 
 #include <brdfnav/core/material.h>
+#include <brdfnav/navigator/blend.h>
 #include <brdfnav/navigator/database.h>
 #include <brdfnav/navigator/image.h>
 

@@ -1,0 +1,19 @@
+// The blend a thumbnail shows between grid nodes (brdfnav/navigator/thumbnails.h), as a function
+// of images: the one definition the navigator's thumbnails and the builder's blend check
+// (db::blend_check_file(), docs/DATABASE.md) share.
+#pragma once
+
+#include <brdfnav/core/material.h>
+#include <brdfnav/navigator/image.h>
+
+#include <span>
+
+namespace brdfnav {
+
+// Each of `specular` (one image per corner) composed with `rho_d` times `diffuse` and `rho_s`,
+// summed with `weights` in cube-root space, clamped at 0 and cubed back; alpha is `diffuse`'s
+// mask. Throws ImageError when the images' sizes differ.
+Image blend_images(const Image& diffuse, std::span<const Image* const> specular,
+                   std::span<const double> weights, const Rgb& rho_d, const Rgb& rho_s);
+
+}  // namespace brdfnav
