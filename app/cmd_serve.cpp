@@ -5,6 +5,8 @@
 #include "serve_api.h"
 #include "web_assets.h"
 
+#include <brdfnav/navigator/database_format.h>
+
 #include <httplib.h>
 #include <unistd.h>
 
@@ -151,6 +153,26 @@ std::string url(const std::string& host, int port) {
   return "http://" + (ipv6 ? "[" + host + "]" : host) + ":" + std::to_string(port) + "/";
 }
 
+// Final images are blends only where the database's blend check vouches for them, at its own
+// resolution: say when none can be, so that a slow page has its reason in the log.
+void warn_of_rendered_finals(const Database& db, int resolution) {
+  const Manifest& m = db.manifest();
+  std::string missing;
+  for (const ProfileGrid& g : m.grids)
+    if (!m.files.contains(db::blend_check_file(g.model)))
+      missing += (missing.empty() ? "" : ", ") + std::string(model_info(g.model).name);
+  if (!missing.empty())
+    std::fprintf(stderr,
+                 "brdfnav: warning: %s: no blend check for %s (built before it): every final "
+                 "image of these models is rendered; rebuild the database for quicker rings\n",
+                 db.dir().c_str(), missing.c_str());
+  else if (resolution != m.resolution)
+    std::fprintf(stderr,
+                 "brdfnav: warning: --resolution %d is not the database's %d: every final image "
+                 "is rendered (blends are vouched for at the database's resolution only)\n",
+                 resolution, m.resolution);
+}
+
 // The write end of the pipe that on_stop_signal() writes to, and the handler: write() is
 // async-signal-safe.
 int stop_pipe_write = -1;
@@ -184,6 +206,7 @@ void serve(const ServeOptions& o) {
   add_error_handling(server);
   size_for_bursts(server);
   const int port = bind(server, o);
+  warn_of_rendered_finals(api->navigator().database(), o.resolution);
   if (o.host != "127.0.0.1" && o.host != "localhost" && o.host != "::1")
     std::fprintf(stderr, "brdfnav: warning: --host %s: reachable from other machines\n",
                  o.host.c_str());

@@ -1,9 +1,9 @@
-// Thumbnails rendered exactly: what `POST /api/thumbnail` answers unless a preview (the blend of
-// the database's images, brdfnav/navigator/thumbnails.h) is asked for. A blend between grid
+// Thumbnails rendered exactly, under the database's map and scene, at the thumbnails' resolution
+// or a larger one (a sharp centre on a screen of device pixel ratio 2). A blend between grid
 // nodes can show another material (Lafortune across its switch at cz = 1/sqrt(3): up to 5 eps
-// from the exact render, `brdfnav bench fidelity`); the renderer's image is the material itself,
-// under the database's map and scene, at the thumbnails' resolution or a larger one (a sharp
-// centre on a screen of device pixel ratio 2).
+// from the exact render, `brdfnav bench fidelity`); the renderer's image is the material itself.
+// What the server answers is FinalImages' choice (final_images.h): these renders, or the blend
+// where the database's blend check vouches for it.
 #pragma once
 
 #include <brdfnav/core/material.h>

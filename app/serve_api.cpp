@@ -335,7 +335,8 @@ ApiResponse error_response(int status, const std::string& message) {
 NavigatorApi::NavigatorApi(const ApiOptions& options)
     : navigator_(Navigator::open(options.db)),
       thumbnails_(navigator_.database(), options.resolution),
-      exact_(navigator_.database(), thumbnails_.resolution()) {
+      exact_(navigator_.database(), thumbnails_.resolution()),
+      final_(thumbnails_, exact_) {
   sizes_.push_back(thumbnails_.resolution());
   for (int size : kSharpThumbnailSizes)
     if (size > sizes_.front()) sizes_.push_back(size);
@@ -398,9 +399,7 @@ ApiResponse NavigatorApi::neighbors(std::string_view body) const {
     const Tab tab = read_tab(require(request, "tab"));
     std::function<void()> before_render = enter_ring(rings_, request);
     std::optional<ExactSteps> steps;
-    if (read_flag(request, "exact"))
-      steps = exact_.steps_from(current, navigator_.database().manifest().resolution,
-                                std::move(before_render));
+    if (read_flag(request, "exact")) steps = final_.steps_from(current, std::move(before_render));
     json list = json::array();
     for (const Neighbor& n : navigator_.neighbors(current, radius, tab, read_clusters(request),
                                                   steps ? &*steps : nullptr))
@@ -421,11 +420,15 @@ ApiResponse NavigatorApi::thumbnail(std::string_view body) const {
       throw request_error(
           "size", "a preview is drawn at " + std::to_string(thumbnails_.resolution()) + " px only");
     const std::function<void()> before_render = enter_ring(rings_, request);
+    const bool blend = quick || final_.shows_blend(m, size);
     // A copy of a cached exact render: the display encoding works in place.
-    Image linear = quick ? thumbnails_.render(m) : Image(*exact_.render(m, size, before_render));
+    Image linear = blend ? thumbnails_.render(m) : Image(*exact_.render(m, size, before_render));
     const ocio::Thumbnail shown = display_encode(
         std::move(linear), shows_sphere(navigator_.database()), color_, display, view);
-    return ApiResponse{200, "image/png", encode_png(shown.rgba, shown.width, shown.height)};
+    return ApiResponse{200,
+                       "image/png",
+                       encode_png(shown.rgba, shown.width, shown.height),
+                       {{"X-Brdfnav-Image", blend ? "blend" : "render"}}};
   });
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "exact_thumbnails.h"
+#include "final_images.h"
 #include "serve_rings.h"
 
 #include <brdfnav/navigator/navigator.h>
@@ -79,17 +80,20 @@ class NavigatorApi {
   // start material and the database's provenance.
   ApiResponse info() const;
   // POST /api/neighbors {material, radius, tab[, k, exact, ring]} -> {neighbors: [{tab, label,
-  // distance, flags, material}]}. With exact: true each offer moves until its render is at
-  // `radius` from the material's (ExactSteps, at the database's resolution), `distance` then
-  // the rendered one: slower (a few renders per offer), and the ring's steps equal. `ring`
+  // distance, flags, material}]}. With exact: true each offer moves until its final image
+  // (FinalImages: the render, or the blend where the database vouches for it) is at `radius`
+  // from the material's (ExactSteps, at the database's resolution), `distance` then the
+  // measured one: slower (a few images per offer), and the ring's steps equal. `ring`
   // ({client, id}), here and in /api/thumbnail: once the same client asks for a later ring, the
   // renders still to start for this one are dropped and the answer is 409.
   ApiResponse neighbors(std::string_view body) const;
-  // POST /api/thumbnail {material[, display, view, preview, size]} -> image/png: the exact
-  // render of the material (ExactThumbnails) at `size` (the thumbnails' resolution, or one of
+  // POST /api/thumbnail {material[, display, view, preview, size]} -> image/png: the final
+  // image of the material (FinalImages: the exact render, or the blend where the database's
+  // blend check vouches for it) at `size` (the thumbnails' resolution, or one of
   // kSharpThumbnailSizes above it: /api/info's thumbnail_sizes), or with preview: true the quick
-  // blend of the database's images (Thumbnails) at the thumbnails' resolution. Alpha is the
-  // coverage, the sphere's edge antialiased.
+  // blend of the database's images (Thumbnails) at the thumbnails' resolution, vouched for or
+  // not. The header X-Brdfnav-Image says which: "blend" or "render". Alpha is the coverage, the
+  // sphere's edge antialiased.
   ApiResponse thumbnail(std::string_view body) const;
   // POST /api/export {material[, format]} -> what `brdfnav export --format FORMAT` writes
   // (yaml, the default: application/yaml; materialx: application/xml; cycles:
@@ -107,6 +111,7 @@ class NavigatorApi {
   // The exact thumbnails at every size, and the renders of exact steps at the database's
   // resolution (the metric's).
   ExactThumbnails exact_;
+  FinalImages final_;       // what the page keeps: exact_'s renders or thumbnails_' blends
   std::vector<int> sizes_;  // of a thumbnail: the thumbnails' resolution first
   mutable LeftRings rings_;
   ocio::ColorPipeline color_;

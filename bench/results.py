@@ -199,8 +199,8 @@ TARGETS = [
            below("rss_open_mib", 200, "MB", scale=MB_PER_MIB)),
 ] + [
     Target(f"fidelity.thumbnails.{m}", "fidelity",
-           f"{m}: preview thumbnails vs exact <= 0.05 eps median, 0.25 worst",
-           worst_of([(f"{m}_thumbnail_median_eps", 0.05), (f"{m}_thumbnail_worst_eps", 0.25)],
+           f"{m}: final images vs exact <= 0.05 eps median, 0.25 worst",
+           worst_of([(f"{m}_final_median_eps", 0.05), (f"{m}_final_worst_eps", 0.25)],
                     lambda a, b: f"{a:.3f} / {b:.3f} eps")) for m in MODELS
 ] + [
     Target(f"fidelity.steps.{m}", "fidelity",
@@ -436,9 +436,15 @@ def read_text(path):
 
 
 def ring_figures(path):
-    """ring_latency.py's Markdown table: per model, preview and final p95 (seconds). Columns are
-    found by their headers, so a column added to the table does not shift the ones read."""
-    lines = [l for l in read_text(path).splitlines() if l.startswith("|")]
+    """ring_latency.py's first Markdown table: per model, preview and final p95 (seconds). Columns
+    are found by their headers, so a column added to the table does not shift the ones read; the
+    tables after it (per tab) are not read."""
+    lines = []
+    for line in read_text(path).splitlines():
+        if line.startswith("|"):
+            lines.append(line)
+        elif lines:
+            break
     if len(lines) < 3:
         raise BenchError(f"{path}: no table")
     header = [c.strip() for c in lines[0].strip("|").split("|")]

@@ -1,7 +1,9 @@
 // `brdfnav bench fidelity`: renders what the navigator offers exactly, with the database's own
 // renderer settings (map, scene, resolution, quality), and compares
-// - each thumbnail the navigator would show (the centre and every offer) with the exact render
-//   of its material: the targets are 0.05 eps (median) and 0.25 eps (worst);
+// - each final image the server would show (the centre and every offer: FinalImages, the blend
+//   where the database's blend check vouches for it, else the render) with the exact render of
+//   its material: the targets are 0.05 eps (median) and 0.25 eps (worst); and the previews (every
+//   image a blend) alike, for comparison;
 // - each offer's exact distance from the current material with eps, per tab: the targets are
 //   5% (median) and 10% (90th percentile) of |rendered / eps - 1|. Offers flagged at a grid end,
 //   at a colour limit or beyond the radius do not aim at eps and are counted apart.
@@ -10,6 +12,7 @@
 #include "bench_figures.h"
 #include "bench_navigator.h"
 #include "exact_thumbnails.h"
+#include "final_images.h"
 
 #include <brdfnav/core/statistics.h>
 #include <brdfnav/navigator/navigator.h>
@@ -61,20 +64,27 @@ void run_fidelity_bench(const FidelityBenchOptions& o) {
   // exact thumbnails and steps render.
   const ExactThumbnails renders(db, manifest.resolution);
   const Thumbnails thumbnails(db, manifest.resolution);
+  const FinalImages finals(thumbnails, renders);
   const Tab tabs[] = {Tab::lobe, Tab::diffuse, Tab::specular, Tab::models};
 
-  std::map<std::string, std::vector<double>> thumbnail_errors;  // per model, in eps
+  // Per model, in eps: the previews' and the final images' distances from the exact renders.
+  std::map<std::string, std::vector<double>> preview_errors, final_errors;
+  std::map<std::string, int> blends;  // final images that are blends, per model
   std::map<std::pair<std::string, Tab>, Errors> steps;
   const auto exact = [&](const Material& m) {
+    const std::string model(model_info(m.model).name);
     const std::shared_ptr<const Image> image = renders.render(m);
-    thumbnail_errors[std::string(model_info(m.model).name)].push_back(
-        image_distance(*image, thumbnails.render(m)) / o.radius);
+    preview_errors[model].push_back(image_distance(*image, thumbnails.render(m)) / o.radius);
+    final_errors[model].push_back(image_distance(*image, *finals.image(m, manifest.resolution)) /
+                                  o.radius);
+    blends[model] += finals.shows_blend(m, manifest.resolution);
     return image;
   };
   for (const Material& m : random_materials(db, o.materials)) {
     const std::string model(model_info(m.model).name);
     const std::shared_ptr<const Image> current = exact(m);
-    const ExactSteps moved = renders.steps_from(m);
+    // The server's exact steps: measured on the final images.
+    const ExactSteps moved = finals.steps_from(m);
     for (Tab tab : tabs) {
       Errors& e = steps[{model, tab}];
       for (const Neighbor& n :
@@ -92,15 +102,25 @@ void run_fidelity_bench(const FidelityBenchOptions& o) {
   std::printf("database %s (profile %s, %d px), eps %.4g, %d random materials per model, %s\n\n",
               o.db.c_str(), manifest.profile.c_str(), manifest.resolution, o.radius, o.materials,
               o.exact ? "steps moved to eps by rendering (--exact)" : "steps from the embedding");
-  std::printf("Thumbnails against exact renders (in eps; targets 0.05 median, 0.25 worst)\n\n");
+  std::printf(
+      "Final images (blends where the database vouches for them, else renders) and previews "
+      "(every image a blend) against exact renders (in eps; targets 0.05 median, 0.25 worst)\n\n");
   BenchFigures figures(o.exact ? "fidelity_exact" : "fidelity");
-  std::printf("| model | images | median | worst | verdict |\n|---|---:|---:|---:|---|\n");
-  for (const auto& [model, errors] : thumbnail_errors) {
+  std::printf(
+      "| model | images | blends | final median | worst | verdict | preview median | worst |\n"
+      "|---|---:|---:|---:|---:|---|---:|---:|\n");
+  for (const auto& [model, errors] : final_errors) {
     const double median = quantile(errors, 0.5), worst = quantile(errors, 1.0);
-    figures.add(model + "_thumbnail_median_eps", median);
-    figures.add(model + "_thumbnail_worst_eps", worst);
-    std::printf("| %s | %zu | %.3f | %.3f | %s |\n", model.c_str(), errors.size(), median, worst,
-                verdict(median <= 0.05 && worst <= 0.25));
+    const std::vector<double>& preview = preview_errors[model];
+    figures.add(model + "_final_median_eps", median);
+    figures.add(model + "_final_worst_eps", worst);
+    figures.add(model + "_final_blends", blends[model]);
+    figures.add(model + "_thumbnail_median_eps", quantile(preview, 0.5));
+    figures.add(model + "_thumbnail_worst_eps", quantile(preview, 1.0));
+    std::printf("| %s | %zu | %d | %.3f | %.3f | %s | %.3f | %.3f |\n", model.c_str(),
+                errors.size(), blends[model], median, worst,
+                verdict(median <= 0.05 && worst <= 0.25), quantile(preview, 0.5),
+                quantile(preview, 1.0));
   }
   std::printf(
       "\nSteps: |rendered / eps - 1| of the unflagged offers (targets 5%% median, 10%% "

@@ -1,0 +1,31 @@
+#include "final_images.h"
+
+namespace brdfnav::cli {
+
+FinalImages::FinalImages(const Thumbnails& blends, const ExactThumbnails& exact, double faithful)
+    : blends_(blends), exact_(exact), faithful_(faithful) {}
+
+bool FinalImages::shows_blend(const Material& m, int size) const {
+  const Database& db = blends_.database();
+  if (size != db.manifest().resolution || size != blends_.resolution()) return false;
+  const std::optional<double> error = db.blend_error(m);
+  return error && *error <= faithful_;
+}
+
+std::shared_ptr<const Image> FinalImages::image(const Material& m, int size,
+                                                const std::function<void()>& check) const {
+  if (shows_blend(m, size)) return std::make_shared<const Image>(blends_.render(m));
+  return exact_.render(m, size, check);
+}
+
+ExactSteps FinalImages::steps_from(const Material& current, std::function<void()> check) const {
+  const int res = blends_.database().manifest().resolution;
+  // The current material's image once, not per step (a He blend sums 64 images).
+  std::shared_ptr<const Image> from = image(current, res, check);
+  ExactSteps steps;
+  steps.distance = [this, from = std::move(from), res, check = std::move(check)](
+                       const Material& m) { return image_distance(*from, *image(m, res, check)); };
+  return steps;
+}
+
+}  // namespace brdfnav::cli
