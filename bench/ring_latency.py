@@ -131,21 +131,26 @@ class Page:
     def __init__(self, args, client):
         self.args, self.client, self.ring = args, client, 0
 
-    def post(self, path, body):
+    def post(self, path, body, header=None):
+        """The answer's body, or with `header` (body, that header's value)."""
         request = urllib.request.Request(self.args.url + path, data=json.dumps(body).encode(),
                                          headers={"Content-Type": "application/json"})
         with urllib.request.urlopen(request) as answer:
-            return answer.read()
+            data = answer.read()
+            return (data, answer.headers.get(header)) if header else data
 
     def thumbnails(self, materials, preview, ring):
+        """How many of the thumbnails were renders (X-Brdfnav-Image), not blends."""
         def one(m):
-            return self.post("/api/thumbnail", {"material": m, "preview": preview, "ring": ring})
+            body = {"material": m, "preview": preview, "ring": ring}
+            return self.post("/api/thumbnail", body, "X-Brdfnav-Image")[1] == "render"
 
         with concurrent.futures.ThreadPoolExecutor(8) as pool:
-            list(pool.map(one, materials))
+            return sum(pool.map(one, materials))
 
     def click(self, current, tab):
-        """A new ring around `current`: (preview seconds or None, final seconds)."""
+        """A new ring around `current`: (preview seconds or None, final seconds, renders among
+        its final images)."""
         self.ring += 1
         ring = {"client": self.client, "id": self.ring}
         started = time.monotonic()
@@ -157,8 +162,8 @@ class Page:
             preview = time.monotonic() - started
         placed = self.post("/api/neighbors", {**query, "exact": self.args.exact})
         offers = json.loads(placed)["neighbors"]
-        self.thumbnails([current] + [n["material"] for n in offers], False, ring)
-        return preview, time.monotonic() - started
+        renders = self.thumbnails([current] + [n["material"] for n in offers], False, ring)
+        return preview, time.monotonic() - started, renders
 
 
 def material(model, fraction, rho_d=0.2):
@@ -171,16 +176,16 @@ def material(model, fraction, rho_d=0.2):
 
 
 def run_page(page, models, index, results, lock):
-    """Page `index` clicks through the rings of `models`; appends (model, preview, final) to
-    `results`."""
+    """Page `index` clicks through the rings of `models`; appends (model, tab, preview, final,
+    renders) to `results`."""
     rho_d = 0.2 + 0.05 * index
     rings = [(model, fraction, tab) for model in models for fraction in FRACTIONS for tab in TABS]
     start = index * len(rings) // page.args.clients
     order = rings[start:] + rings[:start]
     for model, fraction, tab in order[:page.args.rings or len(order)]:
-        preview, final = page.click(material(model, fraction, rho_d), tab)
+        preview, final, renders = page.click(material(model, fraction, rho_d), tab)
         with lock:
-            results.append((model["name"], preview, final))
+            results.append((model["name"], tab, preview, final, renders))
 
 
 def main():
@@ -212,8 +217,8 @@ def main():
     results, lock = [], threading.Lock()
 
     def table_row(name):
-        previews = [p for m, p, _ in results if m == name and p is not None]
-        finals = [f for m, _, f in results if m == name]
+        previews = [p for m, _, p, _, _ in results if m == name and p is not None]
+        finals = [f for m, _, _, f, _ in results if m == name]
         print(f"| {name} | {len(finals)} | {quantiles(previews)} | {quantiles(finals)} |",
               flush=True)
 
@@ -233,9 +238,22 @@ def main():
             run_page(page, [model], 0, results, lock)
             table_row(model["name"])
 
+    # Per model and tab: the final p95, and how many rings needed no render (every final image a
+    # blend the database vouches for, every exact step measured on blends).
+    print("\n| model | " + " | ".join(f"{t} final p95 s (rings without a render)" for t in TABS) +
+          " |\n|---|" + "---:|" * len(TABS))
+    for model in info["models"]:
+        cells = []
+        for tab in TABS:
+            ring = [(f, r) for m, t, _, f, r in results if m == model["name"] and t == tab]
+            cells.append(f"{p95([f for f, _ in ring]):.3f} ({sum(r == 0 for _, r in ring)}/"
+                         f"{len(ring)})" if ring else "-")
+        print(f"| {model['name']} | " + " | ".join(cells) + " |")
+    print()
     summary = {"clients": args.clients, "rings": len(results),
-               "final_p95_s": round(p95([f for _, _, f in results]), 3)}
-    previews = [p for _, p, _ in results if p is not None]
+               "rings_without_render": sum(1 for *_, r in results if r == 0),
+               "final_p95_s": round(p95([f for _, _, _, f, _ in results]), 3)}
+    previews = [p for _, _, p, _, _ in results if p is not None]
     if previews:
         summary["preview_p95_s"] = round(p95(previews), 3)
     if sampler:
