@@ -2,13 +2,17 @@
 // verifies one and prints what it holds.
 #include "command_options.h"
 #include "commands.h"
+#include "final_images.h"
 #include "progress.h"
 
+#include <brdfnav/core/statistics.h>
 #include <brdfnav/precompute/database.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <tuple>
+#include <vector>
 
 namespace brdfnav::cli {
 
@@ -37,6 +41,20 @@ void print_info(const Database& db) {
   for (const ProfileGrid& g : m.grids)
     std::printf("model %s: %zu nodes\n", std::string(model_info(g.model).name).c_str(),
                 g.grid.node_count());
+  // Where the server shows blends as final images (docs/NAVIGATION.md, Final images).
+  for (const ProfileGrid& g : m.grids) {
+    const std::span<const float> checks = db.blend_checks(g.model);
+    const std::string name(model_info(g.model).name);
+    if (checks.empty()) {
+      std::printf("blend check %s: none (every final image is rendered)\n", name.c_str());
+      continue;
+    }
+    const auto vouched = std::count_if(checks.begin(), checks.end(),
+                                       [](float d) { return d <= FinalImages::kFaithfulBlend; });
+    std::vector<double> values(checks.begin(), checks.end());
+    std::printf("blend check %s: %td of %zu cells vouched for (median %.4f, worst %.4f)\n",
+                name.c_str(), vouched, checks.size(), quantile(values, 0.5), quantile(values, 1.0));
+  }
   std::printf("files: %zu (all checksums verified)\n", m.files.size());
 }
 

@@ -165,8 +165,15 @@ const ConversionTable* Database::conversion(ModelId from, ModelId to) const {
 std::optional<double> Database::blend_error(const Material& m) const {
   const auto it = blend_errors_.find(m.model);
   const ModelEmbedding* e = embedding(m.model);
-  if (it == blend_errors_.end() || !e) return std::nullopt;
+  // A material of another shape is no cell's: the caller's validate() says what is wrong.
+  if (it == blend_errors_.end() || !e || m.params.size() != e->grid().dimensions())
+    return std::nullopt;
   return it->second[e->grid().cell_index(m.params)];
+}
+
+std::span<const float> Database::blend_checks(ModelId id) const {
+  const auto it = blend_errors_.find(id);
+  return it == blend_errors_.end() ? std::span<const float>() : std::span<const float>(it->second);
 }
 
 fs::path Database::image_path(ModelId id, std::size_t node) const {

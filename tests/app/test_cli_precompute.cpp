@@ -21,7 +21,7 @@ TEST(CliPrecompute, BuildsVerifiesAndRejectsACorruptDatabase) {
   // --res: the smallest size the CLI takes (the renderer is the bottleneck).
   auto r = run_cli("precompute --profile smoke --res 8 --out " + db.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* phase : {"render: ", "embedding: ", "fits: ", "manifest: "})
+  for (const char* phase : {"render: ", "embedding: ", "fits: ", "blend check: ", "manifest: "})
     EXPECT_NE(r.err.find(std::string("brdfnav: ") + phase), std::string::npos) << phase;
   EXPECT_FALSE(fs::exists(db.string() + ".partial"));
 
@@ -30,6 +30,9 @@ TEST(CliPrecompute, BuildsVerifiesAndRejectsACorruptDatabase) {
   EXPECT_NE(r.out.find("profile: smoke"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("resolution: 8"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("model he: 8 nodes"), std::string::npos) << r.out;
+  // Ward's smoke grid is 3 x 3 nodes, 2 x 2 cells.
+  EXPECT_NE(r.out.find("blend check ward: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" of 4 cells vouched for (median "), std::string::npos) << r.out;
 
   r = run_cli("precompute --profile smoke --res 8 --out " + db.string());
   EXPECT_NE(r.exit_code, 0);

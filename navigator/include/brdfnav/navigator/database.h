@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -94,6 +95,8 @@ class Database {
   // for the lobe alone (rho_d = 0, rho_s = 1: the hardest case for the cube root). nullopt when
   // the database holds no check for the model (built before the check).
   std::optional<double> blend_error(const Material& m) const;
+  // Every cell's blend check of a model (ParamGrid::cell_index order); empty when it has none.
+  std::span<const float> blend_checks(ModelId id) const;
 
  private:
   std::filesystem::path dir_;
