@@ -168,7 +168,12 @@ std::optional<double> Database::blend_error(const Material& m) const {
   // A material of another shape is no cell's: the caller's validate() says what is wrong.
   if (it == blend_errors_.end() || !e || m.params.size() != e->grid().dimensions())
     return std::nullopt;
-  return it->second[e->grid().cell_index(m.params)];
+  // Nor is one beyond the grid: its blend is that of the grid's edge, not of the material.
+  const ParamGrid& grid = e->grid();
+  for (std::size_t d = 0; d < grid.dimensions(); ++d)
+    if (!(m.params[d] >= grid.axis(d).front() && m.params[d] <= grid.axis(d).back()))
+      return std::nullopt;
+  return it->second[grid.cell_index(m.params)];
 }
 
 std::span<const float> Database::blend_checks(ModelId id) const {

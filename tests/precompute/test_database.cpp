@@ -227,6 +227,12 @@ TEST(Database, RecordsTheBlendCheckOfEveryCell) {
     }
   }
   EXPECT_FALSE(db.blend_error(default_material(ModelId::he)).has_value());  // not in the database
+  // Beyond the grid (Ward's alpha_x from 0.02 to 0.3) the blend is the edge's: no cell vouches.
+  Material beyond = default_material(ModelId::ward);
+  beyond.params = {0.5, 0.1};
+  EXPECT_FALSE(db.blend_error(beyond).has_value());
+  beyond.params = {0.3, 0.1};  // on the edge: the last cell's
+  EXPECT_TRUE(db.blend_error(beyond).has_value());
 }
 
 // A database built before the check opens, and vouches for no blend.

@@ -93,7 +93,8 @@ class Database {
   // The blend check of the grid cell holding `m`'s parameters (db::blend_check_file()): the image
   // metric's distance between the thumbnails' blend and an exact render at the cell's midpoint,
   // for the lobe alone (rho_d = 0, rho_s = 1: the hardest case for the cube root). nullopt when
-  // the database holds no check for the model (built before the check).
+  // the database holds no check for the model (built before the check), or the material is not
+  // inside the grid (its blend would be the grid edge's).
   std::optional<double> blend_error(const Material& m) const;
   // Every cell's blend check of a model (ParamGrid::cell_index order); empty when it has none.
   std::span<const float> blend_checks(ModelId id) const;
