@@ -70,7 +70,8 @@ std::pair<int, int> parse_shard(const std::string& text) {
 
 void add_merge_command(CLI::App& precompute) {
   auto* merge = precompute.add_subcommand(
-      "merge", "Join the shards of a sharded precompute into the database (embedding and fits)");
+      "merge",
+      "Join the shards of a sharded precompute into the database (embedding, fits, blend check)");
   auto shards = std::make_shared<std::vector<std::string>>();
   auto out = std::make_shared<std::string>();
   auto threads = std::make_shared<int>(0);

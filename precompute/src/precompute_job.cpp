@@ -1,5 +1,5 @@
-// precompute_database(): the build of a database in three resumable phases (render, embed, fit)
-// and its atomic completion (manifest, rename).
+// precompute_database(): the build of a database in four resumable phases (render, embed, fit,
+// blend check) and its atomic completion (manifest, rename).
 #include <brdfnav/precompute/database.h>
 
 #include <brdfnav/core/atomic_file.h>
