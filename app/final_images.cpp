@@ -1,5 +1,8 @@
 #include "final_images.h"
 
+#include <algorithm>
+#include <optional>
+
 namespace brdfnav::cli {
 
 FinalImages::FinalImages(const Thumbnails& blends, const ExactThumbnails& exact, double faithful)
@@ -18,13 +21,22 @@ std::shared_ptr<const Image> FinalImages::image(const Material& m, int size,
   return exact_.render(m, size, check);
 }
 
-ExactSteps FinalImages::steps_from(const Material& current, std::function<void()> check) const {
+ExactSteps FinalImages::steps_from(const Material& current, double radius,
+                                   std::function<void()> check) const {
   const int res = blends_.database().manifest().resolution;
+  const double bar = std::min(faithful_, kStepShare * radius);
+  const auto step_image = [this, res, bar, check](const Material& m) {
+    const std::optional<double> error = blends_.database().blend_error(m);
+    if (shows_blend(m, res) && error && *error <= bar)
+      return std::make_shared<const Image>(blends_.render(m));
+    return exact_.render(m, res, check);
+  };
   // The current material's image once, not per step (a He blend sums 64 images).
-  std::shared_ptr<const Image> from = image(current, res, check);
+  std::shared_ptr<const Image> from = step_image(current);
   ExactSteps steps;
-  steps.distance = [this, from = std::move(from), res, check = std::move(check)](
-                       const Material& m) { return image_distance(*from, *image(m, res, check)); };
+  steps.distance = [from = std::move(from), step_image](const Material& m) {
+    return image_distance(*from, *step_image(m));
+  };
   return steps;
 }
 

@@ -36,10 +36,14 @@ class FinalImages {
   // ExactThumbnails::render's `check`, its cache and its errors).
   std::shared_ptr<const Image> image(const Material& m, int size,
                                      const std::function<void()>& check = {}) const;
-  // Steps measured on the final images at the database's resolution (the metric's): each
-  // distance is between two blends where both cells are vouched for, renders otherwise. Makes
-  // `current`'s image now (with `check`).
-  ExactSteps steps_from(const Material& current, std::function<void()> check = {}) const;
+  // Steps at `radius` measured at the database's resolution (the metric's) on blends where they
+  // are faithful against the radius too, renders otherwise: an image is its blend where
+  // shows_blend() and its cell's check is within kStepShare * radius. Two images then err by at
+  // most 2 * kStepShare of the radius at their cells' midpoints (the same bar as the thumbnails'
+  // at eps = 0.03, stricter below it). Makes `current`'s image now (with `check`).
+  static constexpr double kStepShare = 0.1;
+  ExactSteps steps_from(const Material& current, double radius,
+                        std::function<void()> check = {}) const;
 
  private:
   const Thumbnails& blends_;

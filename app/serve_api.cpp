@@ -399,7 +399,8 @@ ApiResponse NavigatorApi::neighbors(std::string_view body) const {
     const Tab tab = read_tab(require(request, "tab"));
     std::function<void()> before_render = enter_ring(rings_, request);
     std::optional<ExactSteps> steps;
-    if (read_flag(request, "exact")) steps = final_.steps_from(current, std::move(before_render));
+    if (read_flag(request, "exact"))
+      steps = final_.steps_from(current, radius, std::move(before_render));
     json list = json::array();
     for (const Neighbor& n : navigator_.neighbors(current, radius, tab, read_clusters(request),
                                                   steps ? &*steps : nullptr))

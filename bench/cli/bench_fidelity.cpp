@@ -84,7 +84,7 @@ void run_fidelity_bench(const FidelityBenchOptions& o) {
     const std::string model(model_info(m.model).name);
     const std::shared_ptr<const Image> current = exact(m);
     // The server's exact steps: measured on the final images.
-    const ExactSteps moved = finals.steps_from(m);
+    const ExactSteps moved = finals.steps_from(m, o.radius);
     for (Tab tab : tabs) {
       Errors& e = steps[{model, tab}];
       for (const Neighbor& n :

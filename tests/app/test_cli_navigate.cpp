@@ -170,17 +170,23 @@ TEST_F(CliNavigate, RejectsBadInputNamingIt) {
     EXPECT_EQ(e.path().filename().string().find("never"), std::string::npos) << e.path();
 }
 
-// A contact sheet per tab through OCIO: a PNG of the documented layout (contact_sheet.h); a bad
-// view or tab is rejected by name and leaves no file.
-// bench fidelity renders what the navigator offers and prints, per model, the thumbnails'
-// errors and each tab's steps against eps, with the targets' verdicts.
+// bench fidelity renders what the navigator offers and prints, per model, the final images' and
+// the previews' errors and each tab's steps against eps, with the targets' verdicts.
 TEST_F(CliNavigate, BenchFidelityReportsEveryModelAndTab) {
   CliResult r = run_cli("bench fidelity --db " + db().string() + " --materials 1 --radius 0.03");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("| model | images | median | worst | verdict |"), std::string::npos)
+  EXPECT_NE(r.out.find("| model | images | blends | final median | worst | verdict | preview "
+                       "median | worst |"),
+            std::string::npos)
       << r.out;
   for (const ModelInfo& info : models()) {
     const std::string model(info.name);
+    // The final images meet their targets on the test database (blends or renders).
+    const std::size_t row = r.out.find("\n| " + model + " | ");
+    ASSERT_NE(row, std::string::npos) << model << "\n" << r.out;
+    EXPECT_NE(r.out.substr(row, r.out.find('\n', row + 1) - row).find("| met |"), std::string::npos)
+        << model << "\n"
+        << r.out;
     for (const char* tab : {"lobe", "diffuse", "specular", "models"})
       EXPECT_NE(r.out.find("| " + model + " | " + tab + " | "), std::string::npos)
           << model << " " << tab << "\n"
@@ -191,6 +197,8 @@ TEST_F(CliNavigate, BenchFidelityReportsEveryModelAndTab) {
   EXPECT_NE(r.err.find("--radius"), std::string::npos) << r.err;
 }
 
+// A contact sheet per tab through OCIO: a PNG of the documented layout (contact_sheet.h); a bad
+// view or tab is rejected by name and leaves no file.
 TEST_F(CliNavigate, VariationsWritesAContactSheetPerTab) {
   const std::string material = "--material ward:alpha_x=0.05,alpha_y=0.03,rho_d=0.1,rho_s=0.5";
   for (const char* tab : {"lobe", "diffuse", "specular", "models", "gallery"}) {
