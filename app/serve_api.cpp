@@ -336,7 +336,7 @@ NavigatorApi::NavigatorApi(const ApiOptions& options)
     : navigator_(Navigator::open(options.db)),
       thumbnails_(navigator_.database(), options.resolution),
       exact_(navigator_.database(), thumbnails_.resolution()),
-      final_(thumbnails_, exact_) {
+      final_(thumbnails_, exact_, options.faithful_blend) {
   sizes_.push_back(thumbnails_.resolution());
   for (int size : kSharpThumbnailSizes)
     if (size > sizes_.front()) sizes_.push_back(size);

@@ -58,6 +58,8 @@ struct ApiRequest {
 struct ApiOptions {
   std::filesystem::path db;
   int resolution = 128;  // thumbnail width and height
+  // The bar of the database's blend check under which a final image is a blend (FinalImages).
+  double faithful_blend = FinalImages::kFaithfulBlend;
 };
 
 // Opens the database, the thumbnails and the colour pipeline once; every method is const and
