@@ -5,8 +5,6 @@
 #include "serve_api.h"
 #include "web_assets.h"
 
-#include <brdfnav/navigator/database_format.h>
-
 #include <httplib.h>
 #include <unistd.h>
 
@@ -159,7 +157,7 @@ void warn_of_rendered_finals(const Database& db, int resolution) {
   const Manifest& m = db.manifest();
   std::string missing;
   for (const ProfileGrid& g : m.grids)
-    if (!m.files.contains(db::blend_check_file(g.model)))
+    if (db.blend_checks(g.model).empty())
       missing += (missing.empty() ? "" : ", ") + std::string(model_info(g.model).name);
   if (!missing.empty())
     std::fprintf(stderr,

@@ -8,11 +8,15 @@ namespace brdfnav::cli {
 FinalImages::FinalImages(const Thumbnails& blends, const ExactThumbnails& exact, double faithful)
     : blends_(blends), exact_(exact), faithful_(faithful) {}
 
-bool FinalImages::shows_blend(const Material& m, int size) const {
+bool FinalImages::blend_within(const Material& m, int size, double bar) const {
   const Database& db = blends_.database();
   if (size != db.manifest().resolution || size != blends_.resolution()) return false;
   const std::optional<double> error = db.blend_error(m);
-  return error && *error <= faithful_;
+  return error && *error <= bar;
+}
+
+bool FinalImages::shows_blend(const Material& m, int size) const {
+  return blend_within(m, size, faithful_);
 }
 
 std::shared_ptr<const Image> FinalImages::image(const Material& m, int size,
@@ -26,9 +30,7 @@ ExactSteps FinalImages::steps_from(const Material& current, double radius,
   const int res = blends_.database().manifest().resolution;
   const double bar = std::min(faithful_, kStepShare * radius);
   const auto step_image = [this, res, bar, check](const Material& m) {
-    const std::optional<double> error = blends_.database().blend_error(m);
-    if (shows_blend(m, res) && error && *error <= bar)
-      return std::make_shared<const Image>(blends_.render(m));
+    if (blend_within(m, res, bar)) return std::make_shared<const Image>(blends_.render(m));
     return exact_.render(m, res, check);
   };
   // The current material's image once, not per step (a He blend sums 64 images).

@@ -46,6 +46,10 @@ class FinalImages {
                         std::function<void()> check = {}) const;
 
  private:
+  // Whether `m`'s image at `size` may be its blend under `bar`: the database's resolution and the
+  // blends', and m's cell's check within `bar`.
+  bool blend_within(const Material& m, int size, double bar) const;
+
   const Thumbnails& blends_;
   const ExactThumbnails& exact_;
   double faithful_;

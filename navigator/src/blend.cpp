@@ -3,13 +3,17 @@
 #include <brdfnav/core/cube_root.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace brdfnav {
 
-Image blend_images(const Image& diffuse, std::span<const Image* const> specular,
-                   std::span<const double> weights, const Rgb& rho_d, const Rgb& rho_s) {
+Image blend_images(const Image& diffuse, std::span<const ParamGrid::Corner> corners,
+                   std::span<const Image* const> specular, const Rgb& rho_d, const Rgb& rho_s) {
+  if (specular.size() != corners.size())
+    throw std::invalid_argument("blend: " + std::to_string(specular.size()) + " images for " +
+                                std::to_string(corners.size()) + " corners");
   const std::size_t n = diffuse.rgba.size();
   for (const Image* image : specular)
     if (image->rgba.size() != n)
@@ -25,7 +29,7 @@ Image blend_images(const Image& diffuse, std::span<const Image* const> specular,
     const float* d = diffuse.rgba.data();
     const float* sp = specular[k]->rgba.data();
     for (std::size_t i = 0; i < n; ++i) linear[i] = d_lane[i % 4] * d[i] + s_lane[i % 4] * sp[i];
-    const auto w = static_cast<float>(weights[k]);
+    const auto w = static_cast<float>(corners[k].weight);
     for (std::size_t i = 0; i < n; ++i) root[i] += w * cube_root(linear[i]);
   }
   Image out(diffuse.width, diffuse.height);

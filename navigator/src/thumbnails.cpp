@@ -96,12 +96,8 @@ Image Thumbnails::render(const Material& m) const {
   for (const ParamGrid::Corner& c : corners) keys.push_back({static_cast<int>(m.model), c.node});
   const std::vector<std::shared_ptr<const Image>> images = this->images(keys);
   std::vector<const Image*> specular;
-  std::vector<double> weights;
-  for (std::size_t k = 0; k < corners.size(); ++k) {
-    specular.push_back(images[k + 1].get());
-    weights.push_back(corners[k].weight);
-  }
-  return blend_images(*images[0], specular, weights, m.rho_d, m.rho_s);
+  for (std::size_t k = 0; k < corners.size(); ++k) specular.push_back(images[k + 1].get());
+  return blend_images(*images[0], corners, specular, m.rho_d, m.rho_s);
 }
 
 }  // namespace brdfnav

@@ -394,13 +394,10 @@ class Job {
       db::Table t{std::uint32_t(g.grid.cell_count()), 1, {}};
       for (std::size_t c = 0; c < g.grid.cell_count(); ++c) {
         const Material m = node_material(g.model, g.grid.cell_midpoint(c));
+        const std::vector<ParamGrid::Corner> corners = g.grid.cubic_corners(m.params);
         std::vector<const Image*> images;
-        std::vector<double> weights;
-        for (const ParamGrid::Corner& k : g.grid.cubic_corners(m.params)) {
-          images.push_back(&nodes[k.node]);
-          weights.push_back(k.weight);
-        }
-        const Image blend = blend_images(diffuse, images, weights, m.rho_d, m.rho_s);
+        for (const ParamGrid::Corner& k : corners) images.push_back(&nodes[k.node]);
+        const Image blend = blend_images(diffuse, corners, images, m.rho_d, m.rho_s);
         t.values.push_back(float(image_distance(blend, renderer.render(m))));
         progress("blend check", ++done, total);
       }

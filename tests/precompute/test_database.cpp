@@ -210,14 +210,11 @@ TEST(Database, RecordsTheBlendCheckOfEveryCell) {
       Material m = default_material(g.model);
       m.params = g.grid.cell_midpoint(c);
       m.rho_d = Rgb::Zero(), m.rho_s = Rgb::Ones();
+      const std::vector<ParamGrid::Corner> corners = g.grid.cubic_corners(m.params);
       std::vector<const Image*> images;
-      std::vector<double> weights;
-      for (const ParamGrid::Corner& k : g.grid.cubic_corners(m.params)) {
-        images.push_back(&nodes[k.node]);
-        weights.push_back(k.weight);
-      }
+      for (const ParamGrid::Corner& k : corners) images.push_back(&nodes[k.node]);
       const double expected = image_distance(
-          blend_images(diffuse, images, weights, m.rho_d, m.rho_s), renderer.render(m));
+          blend_images(diffuse, corners, images, m.rho_d, m.rho_s), renderer.render(m));
       EXPECT_GT(expected, 0.0) << model;  // between nodes the blend is not the render
       // Any material of the cell gets its cell's check, whatever its colours.
       m.rho_d = Rgb(0.2, 0.1, 0.05);

@@ -3,6 +3,7 @@
 // (db::blend_check_file(), docs/DATABASE.md) share.
 #pragma once
 
+#include <brdfnav/core/grid.h>
 #include <brdfnav/core/material.h>
 #include <brdfnav/navigator/image.h>
 
@@ -10,10 +11,11 @@
 
 namespace brdfnav {
 
-// Each of `specular` (one image per corner) composed with `rho_d` times `diffuse` and `rho_s`,
-// summed with `weights` in cube-root space, clamped at 0 and cubed back; alpha is `diffuse`'s
-// mask. Throws ImageError when the images' sizes differ.
-Image blend_images(const Image& diffuse, std::span<const Image* const> specular,
-                   std::span<const double> weights, const Rgb& rho_d, const Rgb& rho_s);
+// The specular image of each of `corners` (`specular`, in the same order) composed with `rho_d`
+// times `diffuse` and `rho_s`, summed with the corners' weights in cube-root space, clamped at 0
+// and cubed back; alpha is `diffuse`'s mask. Throws ImageError when the images' sizes differ,
+// std::invalid_argument when there is not one image per corner.
+Image blend_images(const Image& diffuse, std::span<const ParamGrid::Corner> corners,
+                   std::span<const Image* const> specular, const Rgb& rho_d, const Rgb& rho_s);
 
 }  // namespace brdfnav
