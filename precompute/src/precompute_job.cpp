@@ -368,10 +368,10 @@ class Job {
   }
 
   // The blend check (db::blend_check_file()): per cell of each grid, how far the thumbnails'
-  // blend of the node images is from an exact render at the cell's midpoint, rendered as the
-  // navigator's exact thumbnails are (Renderer::render). Lets a server show the blend as the
-  // final image where it is faithful (docs/NAVIGATION.md). A model's table is written once all
-  // its cells are measured; a resumed build keeps the finished ones.
+  // blend of the node images is from an exact render at the cell's midpoint, the image the
+  // navigator's exact thumbnails render (Renderer::render, here several lobes a pass). Lets a
+  // server show the blend as the final image where it is faithful (docs/NAVIGATION.md). A model's
+  // table is written once all its cells are measured; a resumed build keeps the finished ones.
   void check_blends() const {
     RenderOptions options;
     options.threads = r_.threads;
@@ -391,15 +391,29 @@ class Job {
       std::vector<Image> nodes;
       for (std::size_t n = 0; n < g.grid.node_count(); ++n)
         nodes.push_back(read_image(at(db::image_file(g.model, n))));
-      db::Table t{std::uint32_t(g.grid.cell_count()), 1, {}};
+      // The midpoints' renders in the groups that share their quadrature (He's cells along eta,
+      // Cook-Torrance's along f0), each image as Renderer::render() gives it alone.
+      std::vector<Material> cells;
+      std::vector<Lobe> lobes;
       for (std::size_t c = 0; c < g.grid.cell_count(); ++c) {
-        const Material m = node_material(g.model, g.grid.cell_midpoint(c));
-        const std::vector<ParamGrid::Corner> corners = g.grid.cubic_corners(m.params);
-        std::vector<const Image*> images;
-        for (const ParamGrid::Corner& k : corners) images.push_back(&nodes[k.node]);
-        const Image blend = blend_images(diffuse, corners, images, m.rho_d, m.rho_s);
-        t.values.push_back(float(image_distance(blend, renderer.render(m))));
-        progress("blend check", ++done, total);
+        cells.push_back(node_material(g.model, g.grid.cell_midpoint(c)));
+        lobes.push_back(make_lobe(g.model, cells.back().params));
+      }
+      db::Table t{std::uint32_t(g.grid.cell_count()), 1, std::vector<float>(cells.size())};
+      for (const std::vector<std::size_t>& group : quadrature_groups(lobes, kFresnelBatch)) {
+        std::vector<Lobe> batch;
+        for (std::size_t c : group) batch.push_back(lobes[c]);
+        const std::vector<Image> rendered = renderer.specular(batch);
+        for (std::size_t k = 0; k < group.size(); ++k) {
+          const Material& m = cells[group[k]];
+          const std::vector<ParamGrid::Corner> corners = g.grid.cubic_corners(m.params);
+          std::vector<const Image*> images;
+          for (const ParamGrid::Corner& n : corners) images.push_back(&nodes[n.node]);
+          const Image blend = blend_images(diffuse, corners, images, m.rho_d, m.rho_s);
+          const Image exact = compose(diffuse, rendered[k], m.rho_d, m.rho_s);
+          t.values[group[k]] = float(image_distance(blend, exact));
+          progress("blend check", ++done, total);
+        }
       }
       db::write_table(path, t);
     }

@@ -132,12 +132,14 @@ TEST(Render, AStoppedRenderLeavesNothingHalfMade) {
 
 // The precompute renders He's lobes along eta in one pass (shares_quadrature()): each image is
 // the one specular() renders alone, to the bit, whatever else the batch holds; more lobes than a
-// pass takes (5) and lobes of other models or of another sigma come out in order.
+// pass takes (kFresnelBatch) and lobes of other models or of another sigma come out in order.
 TEST(Render, HeLobesAlongEtaRenderTogetherToTheBit) {
   const Scene sphere = Scene::sphere();
   std::vector<Lobe> lobes;
   for (double eta : {1.2, 1.5, 2.0, 4.0, 9.0, 1.01, 20.0})
     lobes.push_back(make_lobe(ModelId::he, std::vector<double>{0.3, 6, eta}));
+  for (int k = 0; k < kFresnelBatch; ++k)  // the etas between, so that one pass cannot hold all
+    lobes.push_back(make_lobe(ModelId::he, std::vector<double>{0.3, 6, 2.5 + 0.5 * k}));
   lobes.insert(lobes.begin() + 2, make_lobe(ModelId::ward, std::vector<double>{0.1, 0.2}));
   lobes.insert(lobes.begin() + 4, make_lobe(ModelId::he, std::vector<double>{0.6, 6, 1.5}));
   EXPECT_TRUE(shares_quadrature(lobes[0], lobes[1]));

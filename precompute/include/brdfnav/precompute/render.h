@@ -80,7 +80,7 @@ class Renderer {
   // The lobe with rho_s = 1 (He's mirror term included).
   Image specular(const Lobe& lobe);
   // specular() of each lobe, to the bit, in order. Lobes that shares_quadrature() are rendered
-  // together, up to five in a pass that costs little more than one of them.
+  // together, up to kFresnelBatch in a pass that costs little more than one of them.
   std::vector<Image> specular(std::span<const Lobe> lobes);
   // Ward lobes with rho_s = 1 at every pair of alpha_x[i] and alpha_y[j], as
   // images[i * alpha_y.size() + j], integrated together over one set of nodes per pixel, fine
@@ -109,8 +109,9 @@ class Renderer {
 };
 
 // The most lobes that Renderer::specular() of a span renders in one pass (kernels.h's
-// FresnelBatchKernel carries one lane per lobe).
-inline constexpr int kFresnelBatch = 5;
+// FresnelBatchKernel carries one lane per lobe). Ten: the default profile's He nodes along eta
+// in one pass, which took 1.2-1.25 times as long as a pass of five (at 128 px).
+inline constexpr int kFresnelBatch = 10;
 
 // Whether the renderer integrates the two lobes over the same nodes at every pixel and can
 // render them together: lobes of one model that differ in its Fresnel parameter alone (He's eta,
