@@ -1,5 +1,7 @@
 #include <brdfnav/precompute/profile.h>
 
+#include <cmath>
+
 namespace brdfnav {
 
 namespace {
@@ -32,21 +34,61 @@ std::vector<double> table_axis(ModelId id, std::size_t d, int count) {
   return axis_between(id, d, spec.grid_min, spec.grid_max, count);
 }
 
-// The default profile's grids: the tables' own, but He's eta. With the table's five etas
-// (1.2, 1.5, 2, 4, 9) the blend check (docs/DATABASE.md) vouched for no He cell: along eta alone
-// the thumbnails' blend was 0.1-0.3 eps from the render at a cell's midpoint, because the
-// Fresnel factor turns fast near eta = 1 and the Catmull-Rom weights assume even steps that the
-// table's (in log eta) are not. Ten nodes evenly spaced in log eta from 1.1 keep every cell
-// above eta = 1.39 within 0.04 eps along eta; the first (1.1-1.39), where the factor turns
-// fastest, stays 0.14-0.27 eps and its materials are rendered. The images along eta of one
-// (sigma, tau) share their quadrature (Renderer::specular of several lobes): twice the nodes
-// cost far less than twice the time.
+// Nodes on [lo, hi] with one at `centre`: `first` apart beside it, the steps then growing by
+// a constant ratio on each side, solved so that `left` steps reach lo and `right` steps hi.
+// Catmull-Rom weights assume even steps; a constant ratio close to 1 keeps neighbouring cells
+// nearly even while the nodes crowd where the images change fastest.
+std::vector<double> graded_axis(double lo, double centre, double hi, double first, int left,
+                                int right) {
+  const auto side = [first](double span, int steps) {
+    double a = 1.0, b = 4.0;  // sum of first * r^k, k < steps, grows with r
+    for (int i = 0; i < 200; ++i) {
+      const double r = 0.5 * (a + b);
+      double sum = 0, step = first;
+      for (int k = 0; k < steps; ++k, step *= r) sum += step;
+      (sum > span ? b : a) = r;
+    }
+    std::vector<double> offsets;
+    double sum = 0, step = first;
+    for (int k = 0; k < steps; ++k, step *= a) offsets.push_back(sum += step);
+    offsets.back() = span;  // exactly at the end
+    return offsets;
+  };
+  std::vector<double> nodes;
+  const std::vector<double> below = side(centre - lo, left), above = side(hi - centre, right);
+  for (auto d = below.rbegin(); d != below.rend(); ++d) nodes.push_back(centre - *d);
+  nodes.push_back(centre);
+  for (double d : above) nodes.push_back(centre + d);
+  return nodes;
+}
+
+// The default profile's grids: the tables' own for Blinn-Phong, Ward, Cook-Torrance and GGX,
+// whose blend check (docs/DATABASE.md) vouched for nearly every cell; denser for He and
+// Lafortune, where the table's grids left the thumbnails' blend far from the render between
+// nodes, so that every image of theirs had to be rendered while the artist waited. Measured
+// along one axis at a time, at the midpoints between nodes, at 128 px:
+// - He's eta: the table's five nodes (1.2, 1.5, 2, 4, 9) were 0.1-0.3 eps off, the Fresnel
+//   factor turning fast near eta = 1 and the table's steps uneven in log eta. Ten evenly
+//   spaced in log eta from 1.1: within 0.04 eps above eta = 1.39; the first cell (1.1-1.39),
+//   where the factor turns fastest, stays 0.14-0.27 eps and is rendered.
+// - He's sigma and tau: up to 0.22 eps between the table's nodes; 0.06 with twice as many.
+//   He's images along eta share their quadrature (one pass per sigma and tau), so its 2,550
+//   images take a few minutes.
+// - Lafortune's cz: up to 0.6 eps between the table's nodes; 51 nodes graded from 0.001 apart
+//   at 1/sqrt(3) (ratio 1.2): within 0.035 eps at n up to 40 but in the last cell before cz = 1.
+//   Its switch at 1/sqrt(3) narrows like 1/n, so the cells beside it stay far off at large n.
+// - Lafortune's n: up to 0.11 eps between the table's 13 nodes; 19.
 std::vector<ProfileGrid> default_grids() {
+  using M = ModelId;
   std::vector<ProfileGrid> grids = table_grids();
-  for (ProfileGrid& g : grids)
-    if (g.model == ModelId::he)
-      g = grid_of(ModelId::he,
-                  {g.grid.axis(0), g.grid.axis(1), axis_between(ModelId::he, 2, 1.1, 9.0, 10)});
+  for (ProfileGrid& g : grids) {
+    if (g.model == M::he)
+      g = grid_of(M::he, {table_axis(M::he, 0, 15), table_axis(M::he, 1, 17),
+                          axis_between(M::he, 2, 1.1, 9.0, 10)});
+    if (g.model == M::lafortune)
+      g = grid_of(M::lafortune, {graded_axis(0.0, 1 / std::sqrt(3.0), 1.0, 0.001, 26, 24),
+                                 table_axis(M::lafortune, 1, 19)});
+  }
   return grids;
 }
 

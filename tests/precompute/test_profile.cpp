@@ -48,30 +48,78 @@ TEST(Profile, GridNodesIncreaseInsideTheValidRanges) {
 // The paper's profile renders the tables' own grids (Table 1 of the paper with this project's
 // ranges): its table gives Blinn-Phong 15 nodes, Ward 15 x 15, Cook-Torrance 11 x 13, Lafortune
 // 14 x 13 and He 8 x 9 x 5, plus the one diffuse image; GGX, which the paper does not have,
-// 13 x 13. The default profile renders the same grids but for He's eta: ten nodes evenly spaced
-// in log eta over [1.1, 9], where the table's five left no He cell's blend within 0.1 eps.
+// 13 x 13. The default profile renders the same grids but He's and Lafortune's, denser where
+// the table's left the thumbnails' blend far from the render (profile.cpp).
 TEST(Profile, PaperAndDefaultRenderTheTablesGrids) {
-  constexpr std::size_t kOthers = 1 + 15 + 15 * 15 + 11 * 13 + 14 * 13 + 13 * 13;
-  const std::map<std::string, std::size_t> images{{"paper", kOthers + 8 * 9 * 5},
-                                                  {"default", kOthers + 8 * 9 * 10}};
+  constexpr std::size_t kOthers = 1 + 15 + 15 * 15 + 11 * 13 + 13 * 13;
+  const std::map<std::string, std::size_t> images{{"paper", kOthers + 14 * 13 + 8 * 9 * 5},
+                                                  {"default", kOthers + 51 * 19 + 15 * 17 * 10}};
   for (const auto& [name, count] : images) {
     const Profile p = make_profile(name);
     EXPECT_EQ(p.image_count(), count) << name;
     EXPECT_EQ(p.pca.components, 200) << name;  // the paper's "first 200 coefficients"
     for (const ProfileGrid& g : p.grids) {
+      if (name == "default" && (g.model == ModelId::he || g.model == ModelId::lafortune)) continue;
       const ParamGrid table(model_info(g.model).params);
-      for (std::size_t d = 0; d < table.dimensions(); ++d) {
-        if (name == "default" && g.model == ModelId::he && d == 2) continue;
+      for (std::size_t d = 0; d < table.dimensions(); ++d)
         EXPECT_EQ(g.grid.axis(d), table.axis(d)) << name << " " << model_info(g.model).name;
-      }
     }
   }
-  const std::vector<double> eta = make_profile("default").grid(ModelId::he)->axis(2);
-  ASSERT_EQ(eta.size(), 10u);
-  for (std::size_t k = 0; k < eta.size(); ++k)
-    EXPECT_NEAR(eta[k], 1.1 * std::pow(9.0 / 1.1, double(k) / 9), 1e-12) << "eta node " << k;
   EXPECT_EQ(make_profile("paper").resolution, 320);  // the paper's 320 x 320 images
   EXPECT_EQ(make_profile("default").resolution, 128);
+}
+
+// Steps between neighbouring nodes of an axis, in the parameter's scale.
+std::vector<double> steps(const ParamSpec& spec, const std::vector<double>& axis) {
+  std::vector<double> out;
+  for (std::size_t k = 1; k < axis.size(); ++k)
+    out.push_back(to_scale(spec, axis[k]) - to_scale(spec, axis[k - 1]));
+  return out;
+}
+
+// He's denser axes keep the table's ranges but eta's, which starts at 1.1; every axis is evenly
+// spaced in its parameter's (log) scale, as Catmull-Rom weights assume.
+TEST(Profile, DefaultHeAxesAreEvenInLogScale) {
+  const Profile p = make_profile("default");
+  const ParamGrid& he = *p.grid(ModelId::he);
+  const ParamGrid table(model_info(ModelId::he).params);
+  const std::size_t counts[] = {15, 17, 10};
+  for (std::size_t d = 0; d < 3; ++d) {
+    const ParamSpec& spec = model_info(ModelId::he).params[d];
+    const std::vector<double> axis = he.axis(d);
+    ASSERT_EQ(axis.size(), counts[d]) << spec.name;
+    EXPECT_NEAR(axis.front(), d == 2 ? 1.1 : table.axis(d).front(), 1e-12) << spec.name;
+    EXPECT_NEAR(axis.back(), table.axis(d).back(), 1e-12) << spec.name;
+    const std::vector<double> s = steps(spec, axis);
+    for (double step : s) EXPECT_NEAR(step, s.front(), 1e-12) << spec.name;
+  }
+}
+
+// Lafortune's cz axis crowds around the switch at 1/sqrt(3), 0.001 apart there, from 0 to 1, each
+// step 1.2 times the one nearer the switch (within a percent); n is 19 nodes evenly spaced in log
+// n over the table's range.
+TEST(Profile, DefaultLafortuneCzAxisIsGradedAroundTheSwitch) {
+  const Profile p = make_profile("default");
+  const ParamGrid& laf = *p.grid(ModelId::lafortune);
+  const std::vector<double> cz = laf.axis(0);
+  ASSERT_EQ(cz.size(), 51u);
+  EXPECT_EQ(cz.front(), 0.0);
+  EXPECT_EQ(cz.back(), 1.0);
+  const double c0 = 1 / std::sqrt(3.0);
+  const auto at = std::find(cz.begin(), cz.end(), c0);
+  ASSERT_NE(at, cz.end());
+  const std::size_t i0 = std::size_t(at - cz.begin());
+  EXPECT_EQ(i0, 26u);
+  EXPECT_NEAR(cz[i0] - cz[i0 - 1], 0.001, 1e-12);
+  EXPECT_NEAR(cz[i0 + 1] - cz[i0], 0.001, 1e-12);
+  for (std::size_t k = i0 + 2; k < cz.size(); ++k)
+    EXPECT_NEAR((cz[k] - cz[k - 1]) / (cz[k - 1] - cz[k - 2]), 1.2, 0.012) << "above, node " << k;
+  for (std::size_t k = 2; k <= i0; ++k)
+    EXPECT_NEAR((cz[k - 1] - cz[k - 2]) / (cz[k] - cz[k - 1]), 1.2, 0.012) << "below, node " << k;
+  const ParamSpec& n = model_info(ModelId::lafortune).params[1];
+  const std::vector<double> s = steps(n, laf.axis(1));
+  ASSERT_EQ(s.size(), 18u);
+  for (double step : s) EXPECT_NEAR(step, s.front(), 1e-12);
 }
 
 TEST(Profile, SmallProfilesRenderSixteenPixelsSquare) {
