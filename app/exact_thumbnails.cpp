@@ -18,6 +18,7 @@ struct ExactThumbnails::Impl {
   struct Slot {
     std::mutex mutex;
     std::optional<Renderer> renderer;
+    std::shared_ptr<const Image> diffuse;  // the renderer's, set with it
   };
 
   Impl(const Database& db, int res, std::size_t images)
@@ -35,9 +36,14 @@ struct ExactThumbnails::Impl {
   std::mutex slots_mutex;
   std::map<int, Slot> slots;  // node-based: a slot stays where it is while others are added
 
-  // The cache of renders by (material, resolution), least recently used out first.
+  // A lobe's render (rho_s = 1) and the diffuse image of its resolution: what a material of
+  // that lobe in any colours is composed of.
+  struct LobeImages {
+    std::shared_ptr<const Image> specular, diffuse;
+  };
+  // The cache of lobes' renders by (lobe, resolution), least recently used out first.
   struct Entry {
-    std::shared_ptr<const Image> image;
+    LobeImages lobe;
     std::list<std::string>::iterator use;
   };
   std::mutex cache_mutex;
@@ -45,23 +51,23 @@ struct ExactThumbnails::Impl {
   std::list<std::string> uses;  // most recently used first
   std::size_t cached_pixels = 0;
 
-  std::shared_ptr<const Image> cached(const std::string& key) {
+  std::optional<LobeImages> cached(const std::string& key) {
     const std::lock_guard lock(cache_mutex);
     const auto it = cache.find(key);
-    if (it == cache.end()) return nullptr;
+    if (it == cache.end()) return std::nullopt;
     uses.splice(uses.begin(), uses, it->second.use);
-    return it->second.image;
+    return it->second.lobe;
   }
 
-  void keep(const std::string& key, std::shared_ptr<const Image> image) {
+  void keep(const std::string& key, const LobeImages& lobe) {
     const std::lock_guard lock(cache_mutex);
     if (cache.contains(key)) return;
     uses.push_front(key);
-    cached_pixels += image->rgba.size() / 4;
-    cache.emplace(key, Entry{std::move(image), uses.begin()});
+    cached_pixels += lobe.specular->rgba.size() / 4;
+    cache.emplace(key, Entry{lobe, uses.begin()});
     while (cached_pixels > capacity_pixels && cache.size() > 1) {
       const auto oldest = cache.find(uses.back());
-      cached_pixels -= oldest->second.image->rgba.size() / 4;
+      cached_pixels -= oldest->second.lobe.specular->rgba.size() / 4;
       cache.erase(oldest);
       uses.pop_back();
     }
@@ -84,8 +90,31 @@ struct ExactThumbnails::Impl {
       RenderOptions options;
       options.quality = make_profile(m.profile).quality;
       s.renderer.emplace(*env, *scene, res, options);
+      s.diffuse = std::make_shared<const Image>(s.renderer->diffuse());
     }
     return *s.renderer;
+  }
+
+  // The render of m's lobe at `res`, cached or made now (Renderer::render composes a material
+  // of the same two images, so the colours' offers of a tab share their lobe's one render).
+  LobeImages lobe(const Material& m, int res, const std::function<void()>& check) {
+    Material shape = m;
+    shape.rho_d = Rgb::Zero();
+    shape.rho_s = Rgb::Ones();
+    const std::string key = std::to_string(res) + " " + format_material_spec(shape);
+    if (auto found = cached(key)) return *found;
+    Slot& s = slot(res);
+    const std::lock_guard lock(s.mutex);
+    if (auto found = cached(key)) return *found;  // rendered while this one waited
+    if (check) check();
+    Renderer& renderer = ready_renderer(s, res);
+    // Set for every render, so that none runs with another's check. A throw from it stops the
+    // render between rows; the renderer keeps nothing half-made (render.h).
+    renderer.set_progress(check ? ProgressSink([check](int, int) { check(); }) : ProgressSink());
+    const LobeImages made{
+        std::make_shared<const Image>(renderer.specular(make_lobe(m.model, m.params))), s.diffuse};
+    keep(key, made);
+    return made;
   }
 };
 
@@ -105,19 +134,9 @@ std::shared_ptr<const Image> ExactThumbnails::render(const Material& m) const {
 std::shared_ptr<const Image> ExactThumbnails::render(const Material& m, int resolution,
                                                      const std::function<void()>& check) const {
   validate(m);
-  const std::string key = std::to_string(resolution) + " " + format_material_spec(m);
-  if (auto image = impl_->cached(key)) return image;
-  Impl::Slot& slot = impl_->slot(resolution);
-  const std::lock_guard lock(slot.mutex);
-  if (auto image = impl_->cached(key)) return image;  // rendered while this one waited
-  if (check) check();
-  Renderer& renderer = impl_->ready_renderer(slot, resolution);
-  // Set for every render, so that none runs with another's check. A throw from it stops the
-  // render between rows; the renderer keeps nothing half-made (render.h).
-  renderer.set_progress(check ? ProgressSink([check](int, int) { check(); }) : ProgressSink());
-  auto image = std::make_shared<const Image>(renderer.render(m));
-  impl_->keep(key, image);
-  return image;
+  require_render_colorspace(m);
+  const Impl::LobeImages lobe = impl_->lobe(m, resolution, check);
+  return std::make_shared<const Image>(compose(*lobe.diffuse, *lobe.specular, m.rho_d, m.rho_s));
 }
 
 ExactSteps ExactThumbnails::steps_from(const Material& current, int resolution,

@@ -21,20 +21,21 @@ class ExactThumbnails {
  public:
   // The map (checked against the database's record of its pixels) and the scene are loaded on
   // the first render, not at start-up, and shared by the renderers of every resolution.
-  // `cache_images`: how many images of `resolution` the cache keeps (larger ones count as
-  // several), least recently used first out.
+  // `cache_images`: how many lobes' images of `resolution` the cache keeps (larger ones count
+  // as several), least recently used first out.
   ExactThumbnails(const Database& database, int resolution, std::size_t cache_images = 512);
   ~ExactThumbnails();
 
   int resolution() const;
-  // Linear RGBA at resolution() (or `resolution`) squared, alpha the coverage. Renders one
-  // material at a time per resolution (each render uses every core), so a large render does not
-  // hold the small ones back; a cached one comes back at once. Throws DatabaseError when the
-  // database's map has changed or is gone, MaterialError for an invalid material.
-  // `check`, when given, is called once the renderer is free, just before a render it would
-  // start (not for a cached image), then from the renderer's progress while it runs (after each
-  // row the calling thread finishes): its exception, if any, leaves the work undone or stops it
-  // (a ring the page has left: serve_rings.h), and nothing of a stopped render is cached.
+  // Linear RGBA at resolution() (or `resolution`) squared, alpha the coverage: the image
+  // Renderer::render gives, its colours composed onto the render of its lobe. Renders one lobe
+  // at a time per resolution (each render uses every core), so a large render does not hold the
+  // small ones back; a cached lobe comes back at once, in any colours. Throws DatabaseError when
+  // the database's map has changed or is gone, MaterialError for an invalid material. `check`, when
+  // given, is called once the renderer is free, just before a render it would start (not for a
+  // cached lobe), then from the renderer's progress while it runs (after each row the calling
+  // thread finishes): its exception, if any, leaves the work undone or stops it (a ring the page
+  // has left: serve_rings.h), and nothing of a stopped render is cached.
   std::shared_ptr<const Image> render(const Material& m) const;
   std::shared_ptr<const Image> render(const Material& m, int resolution,
                                       const std::function<void()>& check = {}) const;

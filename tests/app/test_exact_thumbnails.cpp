@@ -5,6 +5,9 @@
 #include "serve_rings.h"
 
 #include <brdfnav/navigator/database.h>
+#include <brdfnav/precompute/database.h>
+#include <brdfnav/precompute/profile.h>
+#include <brdfnav/precompute/render.h>
 #include <gtest/gtest.h>
 
 #include <ctime>
@@ -84,6 +87,30 @@ TEST(ExactThumbnails, ARingLeftBeforeItsRenderStartsRendersNothing) {
   EXPECT_EQ(calls, 1);
   EXPECT_EQ(exact.render(ward(0.1), 8)->rgba,
             ExactThumbnails(database(), 8).render(ward(0.1))->rgba);
+}
+
+// A material is its lobe's render with its colours composed onto it: the image is the renderer's
+// own (Renderer::render, to the bit), and the same lobe in other colours (a colour tab's offers)
+// renders nothing more: the check, called before every render, is not called.
+TEST(ExactThumbnails, AMaterialInOtherColoursSharesItsLobesRender) {
+  Material first = ward(0.1), other = ward(0.1);
+  first.rho_d = Rgb(0.2, 0.3, 0.4), first.rho_s = Rgb(0.5, 0.5, 0.5);
+  other.rho_d = Rgb(0.6, 0.1, 0.05), other.rho_s = Rgb(0.9, 1.2, 0.3);
+  const ExactThumbnails exact(database(), 8);
+  int renders = 0;
+  exact.render(first, kSize, [&] { ++renders; });
+  EXPECT_GT(renders, 0);
+  renders = 0;
+  const auto image = exact.render(other, kSize, [&] { ++renders; });
+  EXPECT_EQ(renders, 0);
+
+  const EnvMap env = load_database_env(database());
+  const Scene scene = Scene::load(database().manifest().scene);
+  RenderOptions options;
+  options.quality = make_profile(database().manifest().profile).quality;
+  Renderer renderer(env, scene, kSize, options);
+  EXPECT_EQ(image->rgba, renderer.render(other).rgba);
+  EXPECT_EQ(exact.render(first, kSize)->rgba, renderer.render(first).rgba);
 }
 
 }  // namespace
