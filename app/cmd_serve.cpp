@@ -195,15 +195,18 @@ void serve(const ServeOptions& o) {
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
 
+  // The port first: opening a database verifies every file's checksum (seconds for the default
+  // one), and a port in use should not wait for that. Connections made meanwhile wait in the
+  // listening socket's backlog until the routes are in place.
+  httplib::Server server;
+  add_error_handling(server);
+  size_for_bursts(server);
+  const int port = bind(server, o);
   std::unique_ptr<const NavigatorApi> api;
   with_context("--db", [&] {
     api = std::make_unique<const NavigatorApi>(ApiOptions{o.db, o.resolution});
   });
-  httplib::Server server;
   add_routes(server, *api);
-  add_error_handling(server);
-  size_for_bursts(server);
-  const int port = bind(server, o);
   warn_of_rendered_finals(api->navigator().database(), o.resolution);
   if (o.host != "127.0.0.1" && o.host != "localhost" && o.host != "::1")
     std::fprintf(stderr, "brdfnav: warning: --host %s: reachable from other machines\n",
