@@ -421,6 +421,11 @@ function setRadius(position) {
 
 function selectTab(tab) {
   state.tab = tab;
+  // The keyboard focus follows the selection among the tabs, so that a shortcut does not leave
+  // the focus ring on the tab the page has left.
+  const focused = document.activeElement;
+  if (focused?.closest('#tabs') && focused.dataset.tab !== tab)
+    document.querySelector(`#tabs [data-tab=${tab}]`)?.focus();
   redraw();
 }
 

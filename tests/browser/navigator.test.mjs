@@ -260,10 +260,12 @@ test('every tab offers its own variations', async () => {
     models: (n) => n <= 8,
     gallery: (n) => n === 8,
   };
+  await page.focus('#tabs [data-tab=lobe]');  // a tab had the focus: it follows the shortcuts
   for (const [key, tab] of ['diffuse', 'specular', 'lobe', 'models', 'gallery'].entries()) {
     await page.keyboard.press(String(key + 1));  // the tabs' shortcuts
     await settled();
     assert.equal(await page.getAttribute(`#tabs [data-tab=${tab}]`, 'aria-selected'), 'true');
+    assert.equal(await page.evaluate(() => document.activeElement.dataset.tab), tab);
     const offered = await variations();
     assert.ok(expected[tab](offered.length), `${tab}: ${offered.length} variations`);
     for (const v of offered) assert.equal(v.tab, tab);
