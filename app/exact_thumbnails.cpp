@@ -142,10 +142,11 @@ std::shared_ptr<const Image> ExactThumbnails::render(const Material& m, int reso
 ExactSteps ExactThumbnails::steps_from(const Material& current, int resolution,
                                        std::function<void()> check) const {
   const int res = resolution > 0 ? resolution : impl_->resolution;
+  // The current material's image once, not per step: each render() composes its colours anew.
+  std::shared_ptr<const Image> from = render(current, res, check);
   ExactSteps steps;
-  steps.distance = [this, current, res, check = std::move(check)](const Material& m) {
-    return image_distance(*render(current, res, check), *render(m, res, check));
-  };
+  steps.distance = [this, from = std::move(from), res, check = std::move(check)](
+                       const Material& m) { return image_distance(*from, *render(m, res, check)); };
   return steps;
 }
 

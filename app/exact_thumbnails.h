@@ -40,8 +40,9 @@ class ExactThumbnails {
   std::shared_ptr<const Image> render(const Material& m, int resolution,
                                       const std::function<void()>& check = {}) const;
   // Steps measured on these renders (Navigator::neighbors): the image metric's distance from
-  // `current`'s render, at `resolution` (0: resolution()). The renders stay in the cache, so the
-  // thumbnails of the offers are ready once their steps are. Keeps a reference to *this.
+  // `current`'s render, at `resolution` (0: resolution()), which is rendered here, once. The
+  // renders stay in the cache, so the thumbnails of the offers are ready once their steps are.
+  // Keeps a reference to *this.
   ExactSteps steps_from(const Material& current, int resolution = 0,
                         std::function<void()> check = {}) const;
 
