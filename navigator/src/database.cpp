@@ -142,7 +142,8 @@ Database Database::open(const fs::path& dir) {
   db::read_table(dir / db::kSingularValuesFile, 1, k);
   db::read_table(dir / db::kBasisFile, std::uint32_t(covered_count(diffuse)), k);
   for (const ProfileGrid& a : m.grids) {
-    db.embeddings_.push_back(db::read_model_embedding(dir, m.q_nodes, m.components, a));
+    db.embeddings_.push_back(
+        db::read_model_embedding(dir, m.q_nodes, m.components, a, m.format_version));
     if (auto check = load_blend_check(dir, m, a)) db.blend_errors_[a.model] = std::move(*check);
     for (const ProfileGrid& b : m.grids)
       if (b.model != a.model) db.conversions_.push_back(load_conversion(dir, a, b.model));

@@ -1,5 +1,7 @@
 #include <brdfnav/navigator/database_format.h>
 
+#include "mapped_file.h"
+
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/core/sha1.h>
 
@@ -10,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <tuple>
 
 namespace brdfnav::db {
@@ -20,6 +23,7 @@ static_assert(std::endian::native == std::endian::little,
 namespace {
 
 constexpr char kTableMagic[8] = {'B', 'N', 'A', 'V', 'T', 'B', 'L', '1'};
+constexpr std::size_t kTableHeaderBytes = 16;  // the magic, rows and columns (uint32)
 
 std::string model_name(ModelId id) {
   return std::string(model_info(id).name);
@@ -214,6 +218,14 @@ std::pair<std::uint32_t, std::uint32_t> read_header(std::istream& in,
     throw DatabaseError(path.string() + ": not a brdfnav table (bad header)");
   return {rows, cols};
 }
+
+void check_shape(const std::filesystem::path& path, std::uint32_t rows, std::uint32_t cols,
+                 std::uint32_t expected_rows, std::uint32_t expected_cols) {
+  if (rows != expected_rows || cols != expected_cols)
+    throw DatabaseError(path.string() + ": table is " + std::to_string(rows) + " x " +
+                        std::to_string(cols) + ", the manifest implies " +
+                        std::to_string(expected_rows) + " x " + std::to_string(expected_cols));
+}
 }  // namespace
 
 Table read_table(const std::filesystem::path& path, std::uint32_t rows, std::uint32_t cols) {
@@ -221,10 +233,7 @@ Table read_table(const std::filesystem::path& path, std::uint32_t rows, std::uin
   if (!in) throw DatabaseError(path.string() + ": cannot open");
   Table t;
   std::tie(t.rows, t.cols) = read_header(in, path);
-  if (t.rows != rows || t.cols != cols)
-    throw DatabaseError(path.string() + ": table is " + std::to_string(t.rows) + " x " +
-                        std::to_string(t.cols) + ", the manifest implies " + std::to_string(rows) +
-                        " x " + std::to_string(cols));
+  check_shape(path, t.rows, t.cols, rows, cols);
   t.values.resize(std::size_t(rows) * cols);
   in.read(reinterpret_cast<char*>(t.values.data()), std::streamsize(t.values.size() * 4));
   if (!in || in.peek() != std::char_traits<char>::eof())
@@ -240,13 +249,35 @@ std::pair<std::uint32_t, std::uint32_t> read_table_shape(const std::filesystem::
 
 ModelEmbedding read_model_embedding(const std::filesystem::path& dir,
                                     const std::vector<double>& q_nodes, int components,
-                                    const ProfileGrid& g) {
-  const auto cols = std::uint32_t(q_nodes.size() * g.grid.node_count() * 3);
-  const Table t = read_table(dir / coefficients_file(g.model), std::uint32_t(components), cols);
-  Eigen::MatrixXf c(t.rows, t.cols);
-  for (std::uint32_t i = 0; i < t.rows; ++i)
-    for (std::uint32_t j = 0; j < t.cols; ++j) c(i, j) = t.at(i, j);
-  return ModelEmbedding(g.model, g.grid, q_nodes, std::move(c));
+                                    const ProfileGrid& g, int format_version) {
+  const auto columns = std::uint32_t(q_nodes.size() * g.grid.node_count() * 3);
+  const auto k = std::uint32_t(components);
+  const std::filesystem::path path = dir / coefficients_file(g.model);
+  if (format_version < 2) {  // k x columns: a column's coefficients are strided; read and transpose
+    const Table t = read_table(path, k, columns);
+    Eigen::MatrixXf c(t.rows, t.cols);
+    for (std::uint32_t i = 0; i < t.rows; ++i)
+      for (std::uint32_t j = 0; j < t.cols; ++j) c(i, j) = t.at(i, j);
+    return ModelEmbedding(g.model, g.grid, q_nodes, std::move(c));
+  }
+  // One row per column: the file is the column-major k x columns matrix, mapped as it lies.
+  auto file = std::make_shared<const MappedFile>(path);
+  const std::span<const std::byte> bytes = file->bytes();
+  std::istringstream header(std::string(reinterpret_cast<const char*>(bytes.data()),
+                                        std::min<std::size_t>(bytes.size(), kTableHeaderBytes)));
+  const auto [rows, cols] = read_header(header, path);
+  check_shape(path, rows, cols, columns, k);
+  if (bytes.size() != kTableHeaderBytes + std::size_t(rows) * cols * 4)
+    throw DatabaseError(path.string() + ": table size does not match its header");
+  const auto* values = reinterpret_cast<const float*>(bytes.data() + kTableHeaderBytes);
+  return ModelEmbedding(g.model, g.grid, q_nodes, file,
+                        ModelEmbedding::Coefficients(values, k, columns));
+}
+
+Table embedding_table(const ModelEmbedding& m) {
+  const ModelEmbedding::Coefficients& c = m.coefficients();
+  return {std::uint32_t(c.cols()), std::uint32_t(c.rows()),
+          std::vector<float>(c.data(), c.data() + c.size())};
 }
 
 std::string settings_yaml(const BuildSettings& settings) {
@@ -285,9 +316,12 @@ Manifest read_manifest(const std::filesystem::path& path) {
     const YAML::Node root = load_yaml(file);
     Manifest m;
     m.format_version = require(root, "brdfnav_database", file).as<int>();
-    if (m.format_version != kDatabaseFormatVersion)
+    if (m.format_version < kOldestDatabaseFormatVersion ||
+        m.format_version > kDatabaseFormatVersion)
       throw DatabaseError(file + ": database format version " + std::to_string(m.format_version) +
-                          "; this brdfnav reads version " + std::to_string(kDatabaseFormatVersion));
+                          "; this brdfnav reads versions " +
+                          std::to_string(kOldestDatabaseFormatVersion) + " to " +
+                          std::to_string(kDatabaseFormatVersion));
     m.profile = require(root, "profile", file).as<std::string>();
     m.resolution = require(root, "resolution", file).as<int>();
     m.scene = require(root, "scene", file).as<std::string>();

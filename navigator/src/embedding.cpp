@@ -1,5 +1,7 @@
 #include <brdfnav/navigator/embedding.h>
 
+#include "mapped_file.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -30,7 +32,21 @@ ModelEmbedding::ModelEmbedding(ModelId model, ParamGrid grid, std::vector<double
     : model_(model),
       grid_(std::move(grid)),
       q_nodes_(std::move(q_nodes)),
-      coefficients_(std::move(coefficients)) {}
+      owned_(std::make_shared<const Eigen::MatrixXf>(std::move(coefficients))),
+      coefficients_(owned_->data(), owned_->rows(), owned_->cols()) {}
+
+ModelEmbedding::ModelEmbedding(ModelId model, ParamGrid grid, std::vector<double> q_nodes,
+                               std::shared_ptr<const db::MappedFile> file,
+                               Coefficients coefficients)
+    : model_(model),
+      grid_(std::move(grid)),
+      q_nodes_(std::move(q_nodes)),
+      mapped_(std::move(file)),
+      coefficients_(coefficients) {}
+
+void ModelEmbedding::release_pages() const {
+  if (mapped_) mapped_->release_pages();
+}
 
 Eigen::VectorXf ModelEmbedding::channel(const std::vector<ParamGrid::Corner>& corners, double q,
                                         int c) const {

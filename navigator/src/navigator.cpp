@@ -377,6 +377,8 @@ void Navigator::build_gallery() {
     gallery_materials_.push_back(hit.material);
     gallery_embeddings_.col(static_cast<Eigen::Index>(i)) = embed(hit.material);
   }
+  // The walks read every node's coefficients at every q; later queries read a few nodes'.
+  for (const ProfileGrid& g : database_.manifest().grids) embedding_of(g.model).release_pages();
 }
 
 }  // namespace brdfnav

@@ -305,19 +305,15 @@ class Job {
     db::Table singular{1, std::uint32_t(v.cols()), {}};
     for (double s : e.basis.singular_values) singular.values.push_back(float(s));
     db::write_table(at(db::kSingularValuesFile), singular);
-    for (const ModelEmbedding& m : e.models) {
-      const Eigen::MatrixXf& c = m.coefficients();
-      db::Table t{std::uint32_t(c.rows()), std::uint32_t(c.cols()), {}};
-      for (Eigen::Index i = 0; i < c.rows(); ++i)
-        for (Eigen::Index j = 0; j < c.cols(); ++j) t.values.push_back(c(i, j));
-      db::write_table(at(db::coefficients_file(m.model())), t);
-    }
+    for (const ModelEmbedding& m : e.models)
+      db::write_table(at(db::coefficients_file(m.model())), db::embedding_table(m));
   }
 
   int components() const { return int(db::read_table_shape(at(db::kSingularValuesFile)).second); }
 
   ModelEmbedding load_embedding(const ProfileGrid& g) const {
-    return db::read_model_embedding(work_, diffuse_fraction_nodes(p_.q_nodes), components(), g);
+    return db::read_model_embedding(work_, diffuse_fraction_nodes(p_.q_nodes), components(), g,
+                                    kDatabaseFormatVersion);
   }
 
   void fit_conversions() {

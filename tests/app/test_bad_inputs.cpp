@@ -186,8 +186,9 @@ TEST_F(BadInputs, DamagedDatabases) {
     return copy_of_db(name);
   };
 
-  fs::path d = damaged("version", {"manifest.yaml: database format version 2", "reads version 1"});
-  replace_in_file(d / manifest, "brdfnav_database: 1", "brdfnav_database: 2");
+  fs::path d =
+      damaged("version", {"manifest.yaml: database format version 3", "reads versions 1 to 2"});
+  replace_in_file(d / manifest, "brdfnav_database: 2", "brdfnav_database: 3");
 
   d = damaged("missing_file", {"images/ward/00001.exr: missing"});
   fs::remove(d / "images/ward/00001.exr");
@@ -247,7 +248,7 @@ TEST_F(BadInputs, DamagedDatabases) {
   const fs::path out = out_dir("export");
   expect_rejected(run_cli("export --db " + file("version").string() + " --material ward --out " +
                           (out / "ward.yaml").string()),
-                  5, {"format version 2"});
+                  5, {"format version 3"});
   expect_empty(out);
 }
 

@@ -1,6 +1,9 @@
 // The database the database targets damage: tests/fuzz/database, made by
-// `brdfnav precompute --profile test --res 8` (regenerate it the same way when the format
-// version changes; corpus_replay.cpp checks that it still opens). Each process works on a copy.
+// `brdfnav precompute --profile test --res 8` in format version 1 and converted to version 2 (its
+// embedding tables transposed to one row per column, the manifest's version and checksums
+// updated), so that the table target reaches the mapped reader. Regenerate or convert it when the
+// format version changes; corpus_replay.cpp checks that it still opens. Each process works on a
+// copy.
 #pragma once
 
 #include "fuzz_target.h"

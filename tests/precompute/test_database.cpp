@@ -277,10 +277,84 @@ TEST(Database, RejectsAFlippedByteNamingTheFile) {
 
 TEST(Database, RejectsAnotherFormatVersion) {
   const fs::path dir = copy_of_reference("version");
-  replace_in_file(dir / "manifest.yaml", "brdfnav_database: 1", "brdfnav_database: 2");
-  const std::string error = open_error(dir);
-  EXPECT_NE(error.find("manifest.yaml"), std::string::npos) << error;
-  EXPECT_NE(error.find("format version 2"), std::string::npos) << error;
+  const std::string current = "brdfnav_database: " + std::to_string(kDatabaseFormatVersion);
+  for (int version : {kOldestDatabaseFormatVersion - 1, kDatabaseFormatVersion + 1}) {
+    const std::string other = "brdfnav_database: " + std::to_string(version);
+    replace_in_file(dir / "manifest.yaml", current, other);
+    const std::string error = open_error(dir);
+    EXPECT_NE(error.find("manifest.yaml"), std::string::npos) << error;
+    EXPECT_NE(error.find("format version " + std::to_string(version)), std::string::npos) << error;
+    replace_in_file(dir / "manifest.yaml", other, current);
+  }
+}
+
+// Format version 1 stored each model's embedding as the k x columns matrix (a column's
+// coefficients strided); version 2 stores one row per column and maps it. A database of version
+// 1 still opens, to the same coefficients.
+TEST(Database, OpensAVersionOneDatabaseToTheSameEmbedding) {
+  const fs::path dir = copy_of_reference("version1");
+  const Database current = Database::open(fixture().db);
+  for (const ProfileGrid& g : current.manifest().grids) {
+    const fs::path file = dir / db::coefficients_file(g.model);
+    const db::Table v2 =
+        db::read_table(file, db::read_table_shape(file).first, db::read_table_shape(file).second);
+    db::Table v1{v2.cols, v2.rows, std::vector<float>(v2.values.size())};
+    for (std::uint32_t r = 0; r < v2.rows; ++r)
+      for (std::uint32_t c = 0; c < v2.cols; ++c) v1.values[c * v1.cols + r] = v2.at(r, c);
+    const std::string old_sha = file_sha1(file);
+    db::write_table(file, v1);
+    replace_in_file(dir / "manifest.yaml", old_sha, file_sha1(file));
+  }
+  replace_in_file(dir / "manifest.yaml",
+                  "brdfnav_database: " + std::to_string(kDatabaseFormatVersion),
+                  "brdfnav_database: 1");
+  const Database old = Database::open(dir);
+  EXPECT_EQ(old.manifest().format_version, 1);
+  for (const ProfileGrid& g : current.manifest().grids) {
+    const ModelEmbedding::Coefficients &a = current.embedding(g.model)->coefficients(),
+                                       &b = old.embedding(g.model)->coefficients();
+    ASSERT_EQ(a.rows(), b.rows());
+    ASSERT_EQ(a.cols(), b.cols());
+    EXPECT_TRUE(a == b) << model_info(g.model).name;
+  }
+}
+
+// The mapped table is checked as a read one is: its header's shape, then its size.
+TEST(Database, RefusesAnEmbeddingTableOfTheWrongShapeOrSize) {
+  const fs::path dir = copy_of_reference("mapped");
+  const Manifest m = Database::open(dir).manifest();
+  const ProfileGrid& ward = m.grids[1];
+  const fs::path file = dir / db::coefficients_file(ward.model);
+  const auto [rows, cols] = db::read_table_shape(file);
+  const db::Table table = db::read_table(file, rows, cols);
+  const auto error = [&] {
+    try {
+      db::read_model_embedding(dir, m.q_nodes, m.components, ward, kDatabaseFormatVersion);
+    } catch (const DatabaseError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  db::write_table(file, {cols, rows, table.values});  // transposed: version 1's shape
+  EXPECT_NE(error().find("embedding/ward.f32: table is"), std::string::npos) << error();
+  db::write_table(file, table);
+  fs::resize_file(file, fs::file_size(file) - 4);
+  EXPECT_NE(error().find("embedding/ward.f32: table size does not match"), std::string::npos)
+      << error();
+  write_bytes(file, "BNAV");
+  EXPECT_NE(error().find("embedding/ward.f32: not a brdfnav table"), std::string::npos) << error();
+}
+
+// Releasing a mapped embedding's pages gives the process's copy back; the next read maps the
+// same coefficients again.
+TEST(Database, AnEmbeddingReadsTheSameAfterItsPagesAreReleased) {
+  const Database db = Database::open(fixture().db);
+  const ModelEmbedding& ward = *db.embedding(ModelId::ward);
+  Material m = default_material(ModelId::ward);
+  m.params = {0.05, 0.1};
+  const Eigen::VectorXf before = ward.embed(m);
+  ward.release_pages();
+  EXPECT_TRUE(ward.embed(m) == before);
 }
 
 TEST(Database, RejectsAMissingFile) {

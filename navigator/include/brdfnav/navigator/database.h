@@ -21,7 +21,10 @@
 
 namespace brdfnav {
 
-inline constexpr int kDatabaseFormatVersion = 1;
+// The format version the builder writes, and the oldest the reader opens. Version 2 stores the
+// embedding one column per row (database_format.h, read_model_embedding()).
+inline constexpr int kDatabaseFormatVersion = 2;
+inline constexpr int kOldestDatabaseFormatVersion = 1;
 
 // A database that cannot be built or used; the message names the file.
 using DatabaseError = LayerError<struct DatabaseErrorTag, ErrorCode::database>;

@@ -73,10 +73,15 @@ Table read_table(const std::filesystem::path& path, std::uint32_t rows, std::uin
 std::pair<std::uint32_t, std::uint32_t> read_table_shape(const std::filesystem::path& path);
 
 // One model's embedding coefficients (`components` x q nodes x grid nodes x 3), from the
-// database or work directory `dir`. Throws DatabaseError naming the file.
+// database or work directory `dir` of that format version. Since version 2 the file holds one row
+// per column of the matrix, and is mapped rather than read: a process holds only the columns its
+// queries touch. Version 1 held the matrix itself (one row per component), and is read whole.
+// Throws DatabaseError naming the file.
 ModelEmbedding read_model_embedding(const std::filesystem::path& dir,
                                     const std::vector<double>& q_nodes, int components,
-                                    const ProfileGrid& grid);
+                                    const ProfileGrid& grid, int format_version);
+// The table of a model's embedding in the current format version: one row per column.
+Table embedding_table(const ModelEmbedding& m);
 
 // One value of the builder's options as the builder holds it: written as an integer or a double.
 using SettingValue = std::variant<std::int64_t, std::uint64_t, double>;

@@ -15,28 +15,45 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <vector>
 
 namespace brdfnav {
+
+namespace db {
+class MappedFile;
+}
 
 // `count` values of q = rho_d / (rho_d + rho_s) uniform in cube root, from 0 to 1: the cube
 // root image changes fastest near q = 0, where a little diffuse light fills the dark pixels.
 std::vector<double> diffuse_fraction_nodes(int count);
 
-// Embedding coefficients of one model over its (q, parameter) grid.
+// Embedding coefficients of one model over its (q, parameter) grid. Copies share the
+// coefficients, which are immutable.
 class ModelEmbedding {
  public:
+  using Coefficients = Eigen::Map<const Eigen::MatrixXf>;
+
   // `coefficients` is k x (q_nodes.size() * grid.node_count() * 3); column
   // (qi * node_count + node) * 3 + channel, already scaled so that Euclidean distance is the
   // metric.
   ModelEmbedding(ModelId model, ParamGrid grid, std::vector<double> q_nodes,
                  Eigen::MatrixXf coefficients);
+  // The same matrix in a mapped database file, column-major; the embedding keeps the file.
+  ModelEmbedding(ModelId model, ParamGrid grid, std::vector<double> q_nodes,
+                 std::shared_ptr<const db::MappedFile> file, Coefficients coefficients);
 
   ModelId model() const { return model_; }
   const ParamGrid& grid() const { return grid_; }
   const std::vector<double>& q_nodes() const { return q_nodes_; }
-  const Eigen::MatrixXf& coefficients() const { return coefficients_; }
+  const Coefficients& coefficients() const { return coefficients_; }
   int components() const { return static_cast<int>(coefficients_.rows()); }
+
+  // Gives back this process's pages of a mapped file's coefficients: they stay in the system's
+  // page cache and are mapped again when next read. For a pass that touched every node (the
+  // gallery), so that the process keeps only what later queries read. Nothing for an owned
+  // matrix.
+  void release_pages() const;
 
   // The 3k-vector of a material of this model (parameters off the grid are interpolated by
   // the cubic spline of ParamGrid::cubic_corners in grid coordinates, which follows the images'
@@ -52,7 +69,9 @@ class ModelEmbedding {
   ModelId model_;
   ParamGrid grid_;
   std::vector<double> q_nodes_;
-  Eigen::MatrixXf coefficients_;
+  std::shared_ptr<const Eigen::MatrixXf> owned_;  // one of the two holds the coefficients
+  std::shared_ptr<const db::MappedFile> mapped_;
+  Coefficients coefficients_;
 };
 
 // Euclidean distance between two embeddings (the metric's approximation).
