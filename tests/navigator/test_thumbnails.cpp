@@ -44,6 +44,31 @@ TEST(Thumbnails, AtAGridNodeTheyAreThePreRenderedImage) {
     ASSERT_NEAR(thumb.rgba[i], expected.rgba[i], 1e-5 * (1 + expected.rgba[i])) << i;
 }
 
+// The blend works on the pixels the diffuse image's mask covers: there it is the weighted sum of
+// the composed images' cube roots, cubed back; elsewhere it is transparent black, whatever the
+// images hold.
+TEST(Blend, ComposesCoveredPixelsAndLeavesTheRestBlack) {
+  Image diffuse(3, 1), a(3, 1), b(3, 1);
+  for (int x = 0; x < 3; ++x)
+    for (int c = 0; c < 3; ++c) {
+      diffuse.pixel(x, 0)[c] = 0.5f + x, a.pixel(x, 0)[c] = 2.f + c, b.pixel(x, 0)[c] = 8.f;
+    }
+  diffuse.pixel(0, 0)[3] = diffuse.pixel(2, 0)[3] = 1.f;  // the middle pixel is not covered
+  const std::vector<ParamGrid::Corner> corners{{0, 0.25}, {1, 0.75}};
+  const std::vector<const Image*> images{&a, &b};
+  const Rgb rho_d(0.1, 0.2, 0.3), rho_s(1.0, 0.5, 0.25);
+  const Image out = blend_images(diffuse, corners, images, rho_d, rho_s);
+  for (int x : {0, 2})
+    for (int c = 0; c < 3; ++c) {
+      const double d = rho_d[c] * diffuse.pixel(x, 0)[c];
+      const double root = 0.25 * std::cbrt(d + rho_s[c] * a.pixel(x, 0)[c]) +
+                          0.75 * std::cbrt(d + rho_s[c] * b.pixel(x, 0)[c]);
+      EXPECT_NEAR(out.pixel(x, 0)[c], root * root * root, 1e-5 * root * root * root) << x << c;
+    }
+  for (int x = 0; x < 3; ++x) EXPECT_EQ(out.pixel(x, 0)[3], diffuse.pixel(x, 0)[3]);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(out.pixel(1, 0)[c], 0.f);
+}
+
 // Between nodes a thumbnail is the image whose cube root the embedding interpolates: its
 // distance to a corner's image is the distance the navigator measures (up to the embedding's
 // truncation to 24 coefficients), and it lies within the grid cell's span of the exact image.
