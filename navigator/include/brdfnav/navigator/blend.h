@@ -13,8 +13,9 @@ namespace brdfnav {
 
 // The specular image of each of `corners` (`specular`, in the same order) composed with `rho_d`
 // times `diffuse` and `rho_s`, summed with the corners' weights in cube-root space, clamped at 0
-// and cubed back; alpha is `diffuse`'s mask, and the pixels it leaves uncovered are black. Throws ImageError when the images' sizes differ,
-// std::invalid_argument when there is not one image per corner.
+// and cubed back; alpha is `diffuse`'s mask, and the pixels it leaves uncovered are black. Throws
+// ImageError when the images' sizes differ, std::invalid_argument when there is not one image per
+// corner.
 Image blend_images(const Image& diffuse, std::span<const ParamGrid::Corner> corners,
                    std::span<const Image* const> specular, const Rgb& rho_d, const Rgb& rho_s);
 
