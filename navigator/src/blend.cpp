@@ -24,9 +24,11 @@ Image blend_images(const Image& diffuse, std::span<const ParamGrid::Corner> corn
   // Only the covered pixels' RGB carry the material: the others are transparent, and black. Their
   // values gathered into contiguous floats let the cube roots, most of the work (a He material
   // blends 64 corners), vectorise; on a 128-pixel sphere they are 59% of the image's floats.
-  std::vector<std::uint32_t> covered;
-  for (std::size_t p = 0; p < n / 4; ++p)
-    if (diffuse.rgba[4 * p + 3] > 0.5f) covered.push_back(std::uint32_t(4 * p));
+  std::vector<std::uint32_t> covered;  // offsets of the covered pixels' first float
+  for (int y = 0; y < diffuse.height; ++y)
+    for (int x = 0; x < diffuse.width; ++x)
+      if (diffuse.covered(x, y))
+        covered.push_back(std::uint32_t(diffuse.pixel(x, y) - &diffuse.rgba[0]));
   const std::size_t m = 3 * covered.size();
   const float rd[3] = {float(rho_d[0]), float(rho_d[1]), float(rho_d[2])};
   const float rs[3] = {float(rho_s[0]), float(rho_s[1]), float(rho_s[2])};

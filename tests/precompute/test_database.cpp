@@ -296,8 +296,8 @@ TEST(Database, OpensAVersionOneDatabaseToTheSameEmbedding) {
   const Database current = Database::open(fixture().db);
   for (const ProfileGrid& g : current.manifest().grids) {
     const fs::path file = dir / db::coefficients_file(g.model);
-    const db::Table v2 =
-        db::read_table(file, db::read_table_shape(file).first, db::read_table_shape(file).second);
+    const auto [rows, cols] = db::read_table_shape(file);
+    const db::Table v2 = db::read_table(file, rows, cols);
     db::Table v1{v2.cols, v2.rows, std::vector<float>(v2.values.size())};
     for (std::uint32_t r = 0; r < v2.rows; ++r)
       for (std::uint32_t c = 0; c < v2.cols; ++c) v1.values[c * v1.cols + r] = v2.at(r, c);
