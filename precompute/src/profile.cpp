@@ -74,9 +74,12 @@ std::vector<double> graded_axis(double lo, double centre, double hi, double firs
 // - He's sigma and tau: up to 0.22 eps between the table's nodes; 0.06 with twice as many.
 //   He's images along eta share their quadrature (one pass per sigma and tau), so its 2,550
 //   images take a few minutes.
-// - Lafortune's cz: up to 0.6 eps between the table's nodes; 51 nodes graded from 0.001 apart
-//   at 1/sqrt(3) (ratio 1.2): within 0.035 eps at n up to 40 but in the last cell before cz = 1.
-//   Its switch at 1/sqrt(3) narrows like 1/n, so the cells beside it stay far off at large n.
+// - Lafortune's cz: up to 0.6 eps between the table's nodes. Its switch at 1/sqrt(3) narrows
+//   like 1/n: the lobe's grazing part fades like exp(-2.6 n |cz - 1/sqrt(3)|), and the images'
+//   slope jumps there (ParamSpec::kink). Graded from 0.001 apart (51 nodes), the cells beside the
+//   switch were 0.1 eps off at n = 100 and 9.9 at n = 16,384. Along cz at n = 16,384, 2e-5 apart
+//   with the spline one-sided at the kink: within 0.084 eps (0.40 with it reaching across). 91
+//   nodes: 2e-5 apart at the switch, each step about 1.21 times the one before, out to 0 and 1.
 // - Lafortune's n: up to 0.11 eps between the table's 13 nodes; 19.
 std::vector<ProfileGrid> default_grids() {
   using M = ModelId;
@@ -86,7 +89,7 @@ std::vector<ProfileGrid> default_grids() {
       g = grid_of(M::he, {table_axis(M::he, 0, 15), table_axis(M::he, 1, 17),
                           axis_between(M::he, 2, 1.1, 9.0, 10)});
     if (g.model == M::lafortune)
-      g = grid_of(M::lafortune, {graded_axis(0.0, 1 / std::sqrt(3.0), 1.0, 0.001, 26, 24),
+      g = grid_of(M::lafortune, {graded_axis(0.0, 1 / std::sqrt(3.0), 1.0, 2e-5, 46, 44),
                                  table_axis(M::lafortune, 1, 19)});
   }
   return grids;

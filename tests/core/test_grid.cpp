@@ -112,6 +112,36 @@ TEST(ParamGrid, CubicCornersAreSmoothAcrossNodes) {
             0.1);
 }
 
+// Lafortune's cz kinks at 1/sqrt(3): the spline on either side of that node uses no node across
+// it, so a function with a corner there (|x - kink| in grid coordinates) is reproduced exactly,
+// where the plain spline rounds the corner off. The table's 0.57735 counts as the kink.
+TEST(ParamGrid, CubicCornersDoNotReachAcrossAKink) {
+  const ParamSpec& cz = model_info(ModelId::lafortune).params[0];
+  const double c0 = 1 / std::sqrt(3.0);
+  const ParamGrid grid(model_info(ModelId::lafortune).params,
+                       {{0.55, 0.56, 0.57, c0, 0.58, 0.59, 0.6}, {10.0, 100.0}});
+  ASSERT_EQ(grid.kink_node(0), 3u);
+  EXPECT_EQ(grid.kink_node(1), ParamGrid::kNoKink);
+  EXPECT_EQ(ParamGrid(model_info(ModelId::lafortune).params).kink_node(0), 7u);  // 0.57735
+  EXPECT_EQ(ParamGrid(model_info(ModelId::ward).params).kink_node(0), ParamGrid::kNoKink);
+  const auto corner = [&](std::size_t node) {
+    return std::abs(double(grid.multi_index(node)[0]) - 3.0);
+  };
+  for (double c : {2.25, 2.5, 2.9, 3.0, 3.1, 3.5, 3.75}) {
+    const std::vector<double> values{grid.value_at(0, c), 10.0};
+    const auto corners = grid.cubic_corners(values);
+    for (const auto& k : corners) {
+      const std::size_t i = grid.multi_index(k.node)[0];
+      EXPECT_TRUE(c < 3.0 ? i <= 3 : i >= 3) << "coordinate " << c << " reaches node " << i;
+    }
+    EXPECT_NEAR(interpolate(corners, [](std::size_t) { return 1.0; }), 1.0, 1e-12) << c;
+    EXPECT_NEAR(interpolate(corners, corner), std::abs(c - 3.0), 1e-12) << c;
+  }
+  // Away from the kink the spline is the plain one: four nodes along cz.
+  EXPECT_EQ(grid.cubic_corners(std::vector<double>{grid.value_at(0, 1.5), 10.0}).size(), 4u);
+  EXPECT_EQ(cz.name, "cz");
+}
+
 TEST(ParamGrid, CubicCornersOfATwoNodeAxisAreLinear) {
   const ParamGrid grid(model_info(ModelId::blinn_phong).params, {{2.0, 200.0}});
   const auto corners = grid.cubic_corners(std::vector<double>{20.0});  // half-way on the log axis

@@ -53,7 +53,7 @@ TEST(Profile, GridNodesIncreaseInsideTheValidRanges) {
 TEST(Profile, PaperAndDefaultRenderTheTablesGrids) {
   constexpr std::size_t kOthers = 1 + 15 + 15 * 15 + 11 * 13 + 13 * 13;
   const std::map<std::string, std::size_t> images{{"paper", kOthers + 14 * 13 + 8 * 9 * 5},
-                                                  {"default", kOthers + 51 * 19 + 15 * 17 * 10}};
+                                                  {"default", kOthers + 91 * 19 + 15 * 17 * 10}};
   for (const auto& [name, count] : images) {
     const Profile p = make_profile(name);
     EXPECT_EQ(p.image_count(), count) << name;
@@ -95,27 +95,28 @@ TEST(Profile, DefaultHeAxesAreEvenInLogScale) {
   }
 }
 
-// Lafortune's cz axis crowds around the switch at 1/sqrt(3), 0.001 apart there, from 0 to 1, each
-// step 1.2 times the one nearer the switch (within a percent); n is 19 nodes evenly spaced in log
-// n over the table's range.
+// Lafortune's cz axis crowds around the switch at 1/sqrt(3), 2e-5 apart there, from 0 to 1, each
+// step 1.21 times the one nearer the switch (within a percent), with the switch its kink node; n is
+// 19 nodes evenly spaced in log n over the table's range.
 TEST(Profile, DefaultLafortuneCzAxisIsGradedAroundTheSwitch) {
   const Profile p = make_profile("default");
   const ParamGrid& laf = *p.grid(ModelId::lafortune);
   const std::vector<double> cz = laf.axis(0);
-  ASSERT_EQ(cz.size(), 51u);
+  ASSERT_EQ(cz.size(), 91u);
   EXPECT_EQ(cz.front(), 0.0);
   EXPECT_EQ(cz.back(), 1.0);
   const double c0 = 1 / std::sqrt(3.0);
   const auto at = std::find(cz.begin(), cz.end(), c0);
   ASSERT_NE(at, cz.end());
   const std::size_t i0 = std::size_t(at - cz.begin());
-  EXPECT_EQ(i0, 26u);
-  EXPECT_NEAR(cz[i0] - cz[i0 - 1], 0.001, 1e-12);
-  EXPECT_NEAR(cz[i0 + 1] - cz[i0], 0.001, 1e-12);
+  EXPECT_EQ(i0, 46u);
+  EXPECT_EQ(laf.kink_node(0), i0);
+  EXPECT_NEAR(cz[i0] - cz[i0 - 1], 2e-5, 1e-15);
+  EXPECT_NEAR(cz[i0 + 1] - cz[i0], 2e-5, 1e-15);
   for (std::size_t k = i0 + 2; k < cz.size(); ++k)
-    EXPECT_NEAR((cz[k] - cz[k - 1]) / (cz[k - 1] - cz[k - 2]), 1.2, 0.012) << "above, node " << k;
+    EXPECT_NEAR((cz[k] - cz[k - 1]) / (cz[k - 1] - cz[k - 2]), 1.21, 0.012) << "above, node " << k;
   for (std::size_t k = 2; k <= i0; ++k)
-    EXPECT_NEAR((cz[k - 1] - cz[k - 2]) / (cz[k] - cz[k - 1]), 1.2, 0.012) << "below, node " << k;
+    EXPECT_NEAR((cz[k - 1] - cz[k - 2]) / (cz[k] - cz[k - 1]), 1.21, 0.012) << "below, node " << k;
   const ParamSpec& n = model_info(ModelId::lafortune).params[1];
   const std::vector<double> s = steps(n, laf.axis(1));
   ASSERT_EQ(s.size(), 18u);

@@ -52,8 +52,13 @@ class ParamGrid {
   // The up to 4^d nodes and weights (summing to 1, some negative) of the tensor-product
   // Catmull-Rom spline in grid coordinates: smooth across nodes, where multilinear interpolation
   // kinks, and exact for functions quadratic in the coordinate away from the ends. What the
-  // embedding uses between its sparse nodes.
+  // embedding uses between its sparse nodes. Across a node on a parameter's kink (ParamSpec::kink)
+  // it is only continuous, as the images are: each side is interpolated as if the axis ended there.
   std::vector<Corner> cubic_corners(std::span<const double> values) const;
+
+  // The node of axis d on its parameter's kink, or kNoKink.
+  static constexpr std::size_t kNoKink = static_cast<std::size_t>(-1);
+  std::size_t kink_node(std::size_t d) const { return kinks_[d]; }
 
  private:
   template <typename AxisRule>
@@ -62,6 +67,7 @@ class ParamGrid {
   std::span<const ParamSpec> specs_;
   std::vector<std::vector<double>> axes_;
   std::vector<std::size_t> strides_;
+  std::vector<std::size_t> kinks_;  // per axis: kink_node()
   std::size_t node_count_ = 1;
 };
 

@@ -3,6 +3,7 @@
 // YAML, the inline spec, the C ABI, the CLI and docs/MODELS.md are all driven from it.
 #pragma once
 
+#include <limits>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -29,6 +30,12 @@ struct ParamSpec {
   // navigator names its lobe variations with them.
   std::string_view more = {};
   std::string_view less = {};
+  // A value where the model's images are continuous but not smooth, NaN where there is none:
+  // Lafortune's normalisation max(|cxy|, cz)^n switches terms at cz = 1/sqrt(3), so the images'
+  // slope along cz jumps there by about 2.6 n (in log scale). A spline through nodes on both
+  // sides rounds that corner off, the error growing with n; a grid node on the kink lets
+  // ParamGrid::cubic_corners() interpolate each side on its own.
+  double kink = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The grid nodes of one parameter, increasing.
