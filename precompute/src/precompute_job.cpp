@@ -95,9 +95,8 @@ struct PendingFile {
   ImageMetadata metadata;
 };
 
-// Writes each unit's images (zip-compressed EXR: about 1% of the precompute's CPU time in a
-// profile, all of it with the renderer's threads waiting) on a thread of its own while the next
-// unit renders. One unit in flight; its errors are rethrown by the next write() or by finish().
+// Writes each unit's images (ExrPixels::half_raw) on a thread of its own while the next unit
+// renders. One unit in flight; its errors are rethrown by the next write() or by finish().
 // `written` is called once per file written, on the caller's thread, as the progress observer
 // expects. If a render fails, destruction waits for the write in flight (std::async's future).
 class ImageWriter {
@@ -108,7 +107,8 @@ class ImageWriter {
     finish();
     count_ = files.size();
     in_flight_ = std::async(std::launch::async, [files = std::move(files)] {
-      for (const PendingFile& f : files) write_exr(f.image, f.path, f.metadata);
+      for (const PendingFile& f : files)
+        write_exr(f.image, f.path, f.metadata, ExrPixels::half_raw);
     });
   }
   void finish() {
@@ -212,7 +212,8 @@ class Job {
     if (!mine(unit++) || reusable_image(at(db::kDiffuseFile))) {
       ++reused;
     } else {
-      write_exr(renderer.diffuse(), at(db::kDiffuseFile), image_metadata(renderer, nullptr));
+      write_exr(renderer.diffuse(), at(db::kDiffuseFile), image_metadata(renderer, nullptr),
+                ExrPixels::half_raw);
     }
     progress("render", ++done, total);
     for (const ProfileGrid& g : p_.grids) {

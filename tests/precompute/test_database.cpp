@@ -6,6 +6,7 @@
 #include <brdfnav/studies/fit_study.h>
 #include <gtest/gtest.h>
 
+#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -233,6 +234,22 @@ TEST(Database, RecordsTheBlendCheckOfEveryCell) {
 }
 
 // A database built before the check opens, and vouches for no blend.
+// The images are stored as ExrPixels::half_raw, the diffuse one and every node's, which the
+// thumbnails read (image_output.h says why).
+TEST(Database, StoresItsImagesAsUncompressedHalves) {
+  const Database db = Database::open(fixture().db);
+  std::vector<fs::path> images{db.diffuse_path()};
+  for (const ProfileGrid& g : db.manifest().grids)
+    for (std::size_t n = 0; n < g.grid.node_count(); ++n)
+      images.push_back(db.image_path(g.model, n));
+  for (const fs::path& path : images) {
+    auto in = OIIO::ImageInput::open(path.string());
+    ASSERT_TRUE(in) << path;
+    EXPECT_EQ(in->spec().format, OIIO::TypeDesc::HALF) << path;
+    EXPECT_EQ(in->spec().get_string_attribute("compression"), "none") << path;
+  }
+}
+
 TEST(Database, OpensWithoutBlendChecks) {
   const fs::path dir = copy_of_reference("no_checks");
   std::ifstream in(dir / "manifest.yaml");
