@@ -32,6 +32,8 @@ ParamGrid::ParamGrid(std::span<const ParamSpec> specs, std::vector<std::vector<d
     strides_.push_back(node_count_);
     node_count_ *= axes_[d].size();
     kinks_.push_back(node_on_kink(specs_[d], axes_[d]));
+    scaled_.emplace_back();
+    for (double v : axes_[d]) scaled_.back().push_back(to_scale(specs_[d], v));
   }
 }
 
@@ -103,25 +105,58 @@ namespace {
 using AxisWeights = std::vector<std::pair<std::size_t, double>>;  // (node on the axis, weight)
 
 // Linear interpolation at grid coordinate c of an axis of n nodes.
-AxisWeights linear_weights(double c, std::size_t n, std::size_t /*kink: a cell is one side*/) {
-  const std::size_t i = std::min(static_cast<std::size_t>(c), n - 2);
+AxisWeights linear_weights(double c, std::span<const double> x,
+                           std::size_t /*a cell is one side*/) {
+  const std::size_t i = std::min(static_cast<std::size_t>(c), x.size() - 2);
   const double t = c - static_cast<double>(i);
   return {{i, 1 - t}, {i + 1, t}};
 }
 
-// Catmull-Rom at grid coordinate c of an axis of n nodes: the cubic through nodes i - 1 .. i + 2
-// with central-difference slopes. Beyond the ends the missing node is the linear extrapolation
-// of the last two (2 p_0 - p_1), so a two-node axis interpolates linearly. A kink node is an end
-// for the cells on either side of it: neither reaches across.
-AxisWeights cubic_weights(double c, std::size_t n, std::size_t kink) {
-  const std::size_t i = std::min(static_cast<std::size_t>(c), n - 2);
-  const double t = c - static_cast<double>(i), t2 = t * t, t3 = t2 * t;
-  double w[4] = {0.5 * (-t3 + 2 * t2 - t), 0.5 * (3 * t3 - 5 * t2 + 2),
-                 0.5 * (-3 * t3 + 4 * t2 + t), 0.5 * (t3 - t2)};
-  if (i == 0 || i == kink) w[1] += 2 * w[0], w[2] -= w[0], w[0] = 0;
-  if (i + 2 == n || i + 1 == kink) w[2] += 2 * w[3], w[1] -= w[3], w[3] = 0;
+// The slope at node j of the axis's nodes x (in the parameter's scale) as weights of the node
+// values, added into w[k] for node i - 1 + k: the slope at x_j of the parabola through three
+// neighbouring nodes of [lo, hi], centred on j inside, the two beside it at an end; the secant
+// when [lo, hi] has two nodes.
+void add_slope(std::span<const double> x, std::size_t j, std::size_t lo, std::size_t hi,
+               std::size_t i, double scale, double w[4]) {
+  const auto add = [&](std::size_t node, double weight) { w[node + 1 - i] += scale * weight; };
+  if (hi - lo == 1) {
+    const double h = x[hi] - x[lo];
+    add(lo, -1 / h), add(hi, 1 / h);
+  } else if (j == lo) {
+    const double h0 = x[j + 1] - x[j], h1 = x[j + 2] - x[j + 1];
+    add(j, -(2 * h0 + h1) / (h0 * (h0 + h1)));
+    add(j + 1, (h0 + h1) / (h0 * h1));
+    add(j + 2, -h0 / (h1 * (h0 + h1)));
+  } else if (j == hi) {
+    const double h0 = x[j] - x[j - 1], h1 = x[j - 1] - x[j - 2];
+    add(j, (2 * h0 + h1) / (h0 * (h0 + h1)));
+    add(j - 1, -(h0 + h1) / (h0 * h1));
+    add(j - 2, h0 / (h1 * (h0 + h1)));
+  } else {
+    const double a = x[j] - x[j - 1], b = x[j + 1] - x[j];
+    add(j - 1, -b / (a * (a + b)));
+    add(j, (b - a) / (a * b));
+    add(j + 1, a / (b * (a + b)));
+  }
+}
+
+// The cubic Hermite spline at grid coordinate c, in the parameter's scale, with each node's
+// slope from the parabola through it and its neighbours (add_slope). On evenly spaced nodes this
+// is Catmull-Rom; on graded ones (Lafortune's cz, He's eta) it follows the nodes' true spacing,
+// where Catmull-Rom in grid coordinates put a kink at every node (0.02-0.05 eps in the blend along
+// a graded eta axis, 0.002 with these slopes). At the ends, and on either side of a kink node,
+// the slope is the parabola's through the three nodes on that side: exact for quadratics there
+// too (He's first eta cell: 0.27 eps with a linear end, 0.17 with this one).
+AxisWeights cubic_weights(double c, std::span<const double> x, std::size_t kink) {
+  const std::size_t n = x.size(), i = std::min(static_cast<std::size_t>(c), n - 2);
+  const std::size_t lo = kink != ParamGrid::kNoKink && kink <= i ? kink : 0;
+  const std::size_t hi = kink != ParamGrid::kNoKink && kink > i ? kink : n - 1;
+  const double t = c - static_cast<double>(i), t2 = t * t, t3 = t2 * t, h = x[i + 1] - x[i];
+  double w[4] = {0, 2 * t3 - 3 * t2 + 1, -2 * t3 + 3 * t2, 0};
+  add_slope(x, i, lo, hi, i, (t3 - 2 * t2 + t) * h, w);
+  add_slope(x, i + 1, lo, hi, i, (t3 - t2) * h, w);
   AxisWeights out;
-  for (int k = 0; k < 4; ++k)
+  for (std::size_t k = 0; k < 4; ++k)
     if (w[k] != 0) out.push_back({i + k - 1, w[k]});  // i + k - 1 >= 0 whenever w[k] != 0
   return out;
 }
@@ -133,8 +168,7 @@ std::vector<ParamGrid::Corner> ParamGrid::tensor_corners(std::span<const double>
   std::vector<Corner> out{{0, 1.0}};
   for (std::size_t d = 0; d < axes_.size(); ++d) {
     std::vector<Corner> next;
-    for (const auto& [node, weight] :
-         rule(grid_coordinate(d, values[d]), axes_[d].size(), kinks_[d])) {
+    for (const auto& [node, weight] : rule(grid_coordinate(d, values[d]), scaled_[d], kinks_[d])) {
       if (weight == 0) continue;
       for (const Corner& k : out) next.push_back({k.node + node * strides_[d], k.weight * weight});
     }

@@ -187,8 +187,8 @@ TEST_F(BadInputs, DamagedDatabases) {
   };
 
   fs::path d =
-      damaged("version", {"manifest.yaml: database format version 3", "reads versions 1 to 2"});
-  replace_in_file(d / manifest, "brdfnav_database: 2", "brdfnav_database: 3");
+      damaged("version", {"manifest.yaml: database format version 4", "reads versions 1 to 3"});
+  replace_in_file(d / manifest, "brdfnav_database: 3", "brdfnav_database: 4");
 
   d = damaged("missing_file", {"images/ward/00001.exr: missing"});
   fs::remove(d / "images/ward/00001.exr");
@@ -248,7 +248,7 @@ TEST_F(BadInputs, DamagedDatabases) {
   const fs::path out = out_dir("export");
   expect_rejected(run_cli("export --db " + file("version").string() + " --material ward --out " +
                           (out / "ward.yaml").string()),
-                  5, {"format version 3"});
+                  5, {"format version 4"});
   expect_empty(out);
 }
 

@@ -64,7 +64,7 @@ double interpolate(const std::vector<ParamGrid::Corner>& corners, F f) {
   return sum;
 }
 
-TEST(ParamGrid, CubicCornersReproduceQuadraticsInsideAndLinesAtTheEnds) {
+TEST(ParamGrid, CubicCornersReproduceQuadraticsInsideAndAtTheEnds) {
   const ParamGrid grid(model_info(ModelId::ward).params);  // 15 x 15 nodes
   const std::vector<double> at_node = grid.node_values(37);
   const auto exact = grid.cubic_corners(at_node);
@@ -78,20 +78,35 @@ TEST(ParamGrid, CubicCornersReproduceQuadraticsInsideAndLinesAtTheEnds) {
     const double x = coordinate(node, 0), y = coordinate(node, 1);
     return 0.5 * x * x - x * y + 2 * y * y - 3 * x + 1;
   };
-  // Coordinates (4.37, 9.81): both cells have two nodes on either side.
-  const std::vector<double> inside{grid.value_at(0, 4.37), grid.value_at(1, 9.81)};
-  const auto corners = grid.cubic_corners(inside);
-  EXPECT_EQ(corners.size(), 16u);
-  EXPECT_NEAR(interpolate(corners, [](std::size_t) { return 1.0; }), 1.0, 1e-12);
-  const double x = 4.37, y = 9.81;
-  EXPECT_NEAR(interpolate(corners, quadratic), 0.5 * x * x - x * y + 2 * y * y - 3 * x + 1, 1e-9);
+  // Coordinates (4.37, 9.81): both cells have two nodes on either side; (0.3, 13.6): first and
+  // last cells, where the slopes come from the three nodes at the end.
+  for (const auto& [x, y] : {std::pair{4.37, 9.81}, std::pair{0.3, 13.6}}) {
+    const std::vector<double> values{grid.value_at(0, x), grid.value_at(1, y)};
+    const auto corners = grid.cubic_corners(values);
+    EXPECT_EQ(corners.size(), x > 1 ? 16u : 9u);
+    EXPECT_NEAR(interpolate(corners, [](std::size_t) { return 1.0; }), 1.0, 1e-12);
+    EXPECT_NEAR(interpolate(corners, quadratic), 0.5 * x * x - x * y + 2 * y * y - 3 * x + 1, 1e-9)
+        << x << " " << y;
+  }
+}
 
-  // In the first and last cells a linear function is still exact.
-  const auto linear = [&](std::size_t node) {
-    return 3.0 * coordinate(node, 0) - 2.0 * coordinate(node, 1) + 1.0;
+// On graded nodes the spline follows their spacing: a quadratic in the parameter's scale is
+// reproduced everywhere (Catmull-Rom in grid coordinates would be off by the steps' unevenness).
+TEST(ParamGrid, CubicCornersFollowGradedNodes) {
+  const ParamSpec& eta = model_info(ModelId::he).params[2];  // log scale
+  std::vector<double> nodes{1.1};
+  for (double step = 0.05; nodes.size() < 10; step *= 1.3)
+    nodes.push_back(nodes.back() * std::exp(step));
+  const ParamGrid grid(model_info(ModelId::he).params, {{0.1, 0.2}, {4.0, 8.0}, nodes});
+  const auto f = [](double x) { return 2 * x * x - 3 * x + 0.5; };
+  const auto at_node = [&](std::size_t node) {
+    return f(to_scale(eta, grid.node_values(node)[2]));
   };
-  const std::vector<double> ends{grid.value_at(0, 0.3), grid.value_at(1, 13.6)};
-  EXPECT_NEAR(interpolate(grid.cubic_corners(ends), linear), 3 * 0.3 - 2 * 13.6 + 1, 1e-9);
+  for (double c = 0; c <= 9; c += 0.125) {
+    const double v = grid.value_at(2, c);
+    const auto corners = grid.cubic_corners(std::vector<double>{0.1, 4.0, v});
+    EXPECT_NEAR(interpolate(corners, at_node), f(to_scale(eta, v)), 1e-9) << c;
+  }
 }
 
 TEST(ParamGrid, CubicCornersAreSmoothAcrossNodes) {
@@ -113,8 +128,8 @@ TEST(ParamGrid, CubicCornersAreSmoothAcrossNodes) {
 }
 
 // Lafortune's cz kinks at 1/sqrt(3): the spline on either side of that node uses no node across
-// it, so a function with a corner there (|x - kink| in grid coordinates) is reproduced exactly,
-// where the plain spline rounds the corner off. The table's 0.57735 counts as the kink.
+// it, so a function with a corner there is reproduced exactly, where a spline reaching across
+// would round the corner off. The table's 0.57735 counts as the kink.
 TEST(ParamGrid, CubicCornersDoNotReachAcrossAKink) {
   const ParamSpec& cz = model_info(ModelId::lafortune).params[0];
   const double c0 = 1 / std::sqrt(3.0);
@@ -124,9 +139,9 @@ TEST(ParamGrid, CubicCornersDoNotReachAcrossAKink) {
   EXPECT_EQ(grid.kink_node(1), ParamGrid::kNoKink);
   EXPECT_EQ(ParamGrid(model_info(ModelId::lafortune).params).kink_node(0), 7u);  // 0.57735
   EXPECT_EQ(ParamGrid(model_info(ModelId::ward).params).kink_node(0), ParamGrid::kNoKink);
-  const auto corner = [&](std::size_t node) {
-    return std::abs(double(grid.multi_index(node)[0]) - 3.0);
-  };
+  // A corner at the kink, linear on each side (in cz's linear scale), with the sides' slopes apart.
+  const auto corner_at = [&](double v) { return v < c0 ? 2 * (c0 - v) : 5 * (v - c0); };
+  const auto corner = [&](std::size_t node) { return corner_at(grid.node_values(node)[0]); };
   for (double c : {2.25, 2.5, 2.9, 3.0, 3.1, 3.5, 3.75}) {
     const std::vector<double> values{grid.value_at(0, c), 10.0};
     const auto corners = grid.cubic_corners(values);
@@ -135,7 +150,7 @@ TEST(ParamGrid, CubicCornersDoNotReachAcrossAKink) {
       EXPECT_TRUE(c < 3.0 ? i <= 3 : i >= 3) << "coordinate " << c << " reaches node " << i;
     }
     EXPECT_NEAR(interpolate(corners, [](std::size_t) { return 1.0; }), 1.0, 1e-12) << c;
-    EXPECT_NEAR(interpolate(corners, corner), std::abs(c - 3.0), 1e-12) << c;
+    EXPECT_NEAR(interpolate(corners, corner), corner_at(values[0]), 1e-12) << c;
   }
   // Away from the kink the spline is the plain one: four nodes along cz.
   EXPECT_EQ(grid.cubic_corners(std::vector<double>{grid.value_at(0, 1.5), 10.0}).size(), 4u);

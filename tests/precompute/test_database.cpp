@@ -233,7 +233,6 @@ TEST(Database, RecordsTheBlendCheckOfEveryCell) {
   EXPECT_TRUE(db.blend_error(beyond).has_value());
 }
 
-// A database built before the check opens, and vouches for no blend.
 // The images are stored as ExrPixels::half_raw, the diffuse one and every node's, which the
 // thumbnails read (image_output.h says why).
 TEST(Database, StoresItsImagesAsUncompressedHalves) {
@@ -250,6 +249,7 @@ TEST(Database, StoresItsImagesAsUncompressedHalves) {
   }
 }
 
+// A database built before the check opens, and vouches for no blend.
 TEST(Database, OpensWithoutBlendChecks) {
   const fs::path dir = copy_of_reference("no_checks");
   std::ifstream in(dir / "manifest.yaml");
@@ -261,6 +261,24 @@ TEST(Database, OpensWithoutBlendChecks) {
   fs::remove_all(dir / "previews");
   const Database db = Database::open(dir);
   EXPECT_FALSE(db.blend_error(default_material(ModelId::ward)).has_value());
+}
+
+// A blend check holds for the spline it was measured with. Version 2 databases measured theirs
+// with Catmull-Rom in grid coordinates, before the spline followed graded nodes and quadratic
+// ends: such a database opens, its embedding and images as they were, but vouches for no blend.
+TEST(Database, IgnoresTheBlendCheckOfAnEarlierSpline) {
+  const fs::path dir = copy_of_reference("version_2");
+  replace_in_file(dir / "manifest.yaml",
+                  "brdfnav_database: " + std::to_string(kDatabaseFormatVersion),
+                  "brdfnav_database: 2");
+  const Database db = Database::open(dir), current = Database::open(fixture().db);
+  EXPECT_EQ(db.manifest().format_version, 2);
+  for (ModelId id : {ModelId::blinn_phong, ModelId::ward, ModelId::lafortune}) {
+    EXPECT_FALSE(current.blend_checks(id).empty());
+    EXPECT_TRUE(db.blend_checks(id).empty());
+    EXPECT_FALSE(db.blend_error(default_material(id)).has_value());
+    EXPECT_EQ(db.embedding(id)->coefficients(), current.embedding(id)->coefficients());
+  }
 }
 
 // A check of another grid's shape, or with a distance that is not one, is refused by name.

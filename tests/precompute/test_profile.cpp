@@ -77,9 +77,10 @@ std::vector<double> steps(const ParamSpec& spec, const std::vector<double>& axis
   return out;
 }
 
-// He's denser axes keep the table's ranges but eta's, which starts at 1.1; every axis is evenly
-// spaced in its parameter's (log) scale, as Catmull-Rom weights assume.
-TEST(Profile, DefaultHeAxesAreEvenInLogScale) {
+// He's denser axes keep the table's ranges but eta's, which starts at 1.1. sigma and tau are
+// evenly spaced in their (log) scale; eta's steps in log eta grow by 1.3 from 1.1, where the
+// Fresnel factor turns fastest.
+TEST(Profile, DefaultHeAxesAreEvenOrGradedInLogScale) {
   const Profile p = make_profile("default");
   const ParamGrid& he = *p.grid(ModelId::he);
   const ParamGrid table(model_info(ModelId::he).params);
@@ -91,7 +92,8 @@ TEST(Profile, DefaultHeAxesAreEvenInLogScale) {
     EXPECT_NEAR(axis.front(), d == 2 ? 1.1 : table.axis(d).front(), 1e-12) << spec.name;
     EXPECT_NEAR(axis.back(), table.axis(d).back(), 1e-12) << spec.name;
     const std::vector<double> s = steps(spec, axis);
-    for (double step : s) EXPECT_NEAR(step, s.front(), 1e-12) << spec.name;
+    for (std::size_t k = 1; k < s.size(); ++k)
+      EXPECT_NEAR(s[k] / s[k - 1], d == 2 ? 1.3 : 1.0, 1e-9) << spec.name << " step " << k;
   }
 }
 

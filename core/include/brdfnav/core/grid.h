@@ -49,11 +49,13 @@ class ParamGrid {
   // The up to 2^d nodes and weights (summing to 1) that multilinearly interpolate at `values`;
   // corners with zero weight are left out.
   std::vector<Corner> corners(std::span<const double> values) const;
-  // The up to 4^d nodes and weights (summing to 1, some negative) of the tensor-product
-  // Catmull-Rom spline in grid coordinates: smooth across nodes, where multilinear interpolation
-  // kinks, and exact for functions quadratic in the coordinate away from the ends. What the
-  // embedding uses between its sparse nodes. Across a node on a parameter's kink (ParamSpec::kink)
-  // it is only continuous, as the images are: each side is interpolated as if the axis ended there.
+  // The up to 4^d nodes and weights (summing to 1, some negative) of the tensor-product cubic
+  // spline in each parameter's scale: smooth across nodes, where multilinear interpolation kinks,
+  // and exact for functions quadratic in the scaled parameter, ends included. Its slopes follow
+  // the nodes' spacing, so a graded axis interpolates as smoothly as an even one (on evenly spaced
+  // nodes it is Catmull-Rom). What the embedding and the thumbnails' blend use between nodes.
+  // Across a node on a parameter's kink (ParamSpec::kink) it is only continuous, as the images
+  // are: each side is interpolated as if the axis ended there.
   std::vector<Corner> cubic_corners(std::span<const double> values) const;
 
   // The node of axis d on its parameter's kink, or kNoKink.
@@ -67,7 +69,8 @@ class ParamGrid {
   std::span<const ParamSpec> specs_;
   std::vector<std::vector<double>> axes_;
   std::vector<std::size_t> strides_;
-  std::vector<std::size_t> kinks_;  // per axis: kink_node()
+  std::vector<std::size_t> kinks_;           // per axis: kink_node()
+  std::vector<std::vector<double>> scaled_;  // per axis: its nodes in the parameter's scale
   std::size_t node_count_ = 1;
 };
 

@@ -22,9 +22,13 @@
 namespace brdfnav {
 
 // The format version the builder writes, and the oldest the reader opens. Version 2 stores the
-// embedding one column per row (database_format.h, read_model_embedding()).
-inline constexpr int kDatabaseFormatVersion = 2;
+// embedding one column per row (database_format.h, read_model_embedding()). Version 3 has the
+// same files, its blend check measured with ParamGrid::cubic_corners' spline as it now is (slopes
+// that follow graded nodes, quadratic ends, one-sided at a kink); an earlier database's check
+// was measured with Catmull-Rom in grid coordinates, and the reader ignores it.
+inline constexpr int kDatabaseFormatVersion = 3;
 inline constexpr int kOldestDatabaseFormatVersion = 1;
+inline constexpr int kOldestBlendCheckFormatVersion = 3;
 
 // A database that cannot be built or used; the message names the file.
 using DatabaseError = LayerError<struct DatabaseErrorTag, ErrorCode::database>;
