@@ -46,7 +46,12 @@ void print_info(const Database& db) {
     const std::span<const float> checks = db.blend_checks(g.model);
     const std::string name(model_info(g.model).name);
     if (checks.empty()) {
-      std::printf("blend check %s: none (every final image is rendered)\n", name.c_str());
+      const std::string why = m.format_version < kOldestBlendCheckFormatVersion
+                                  ? " usable (format version " + std::to_string(m.format_version) +
+                                        ": any check was measured with an earlier spline)"
+                                  : "";
+      std::printf("blend check %s: none%s; every final image is rendered\n", name.c_str(),
+                  why.c_str());
       continue;
     }
     const auto vouched = std::count_if(checks.begin(), checks.end(),

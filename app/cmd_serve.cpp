@@ -159,11 +159,15 @@ void warn_of_rendered_finals(const Database& db, int resolution) {
   for (const ProfileGrid& g : m.grids)
     if (db.blend_checks(g.model).empty())
       missing += (missing.empty() ? "" : ", ") + std::string(model_info(g.model).name);
+  const std::string why = m.format_version < kOldestBlendCheckFormatVersion
+                              ? "format version " + std::to_string(m.format_version) +
+                                    ", checked with an earlier spline"
+                              : "built before it";
   if (!missing.empty())
     std::fprintf(stderr,
-                 "brdfnav: warning: %s: no blend check for %s (built before it): every final "
-                 "image of these models is rendered; rebuild the database for quicker rings\n",
-                 db.dir().c_str(), missing.c_str());
+                 "brdfnav: warning: %s: no blend check for %s (%s): every final image of these "
+                 "models is rendered; rebuild the database for quicker rings\n",
+                 db.dir().c_str(), missing.c_str(), why.c_str());
   else if (resolution != m.resolution)
     std::fprintf(stderr,
                  "brdfnav: warning: --resolution %d is not the database's %d: every final image "

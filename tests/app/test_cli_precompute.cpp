@@ -38,6 +38,21 @@ TEST(CliPrecompute, BuildsVerifiesAndRejectsACorruptDatabase) {
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("already exists"), std::string::npos) << r.err;
 
+  // The same database as format version 2, whose blend checks were measured with an earlier
+  // spline: it opens, and says why it vouches for no blend.
+  const fs::path old = root / "version_2";
+  fs::copy(db, old, fs::copy_options::recursive);
+  std::string manifest = read_text(old / "manifest.yaml");
+  const std::size_t at = manifest.find("brdfnav_database: 3");
+  ASSERT_NE(at, std::string::npos) << manifest;
+  std::ofstream(old / "manifest.yaml") << manifest.replace(at, 19, "brdfnav_database: 2");
+  r = run_cli("db-info --db " + old.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("blend check ward: none usable (format version 2: any check was measured "
+                       "with an earlier spline); every final image is rendered"),
+            std::string::npos)
+      << r.out;
+
   const fs::path table = db / "conversions" / "he_to_ward.f32";
   std::string bytes = read_text(table);
   bytes[bytes.size() - 1] ^= 0x40;
