@@ -143,8 +143,8 @@ void add_slope(std::span<const double> x, std::size_t j, std::size_t lo, std::si
 // The cubic Hermite spline at grid coordinate c, in the parameter's scale, with each node's
 // slope from the parabola through it and its neighbours (add_slope). On evenly spaced nodes this
 // is Catmull-Rom; on graded ones (Lafortune's cz, He's eta) it follows the nodes' true spacing,
-// where Catmull-Rom in grid coordinates put a kink at every node (0.02-0.05 eps in the blend along
-// a graded eta axis, 0.002 with these slopes). At the ends, and on either side of a kink node,
+// where Catmull-Rom in grid coordinates put a kink at every node (0.04-0.05 eps in the blend along
+// a graded eta axis, 0.001-0.007 with these slopes). At the ends, and either side of a kink node,
 // the slope is the parabola's through the three nodes on that side: exact for quadratics there
 // too (He's first eta cell: 0.27 eps with a linear end, 0.17 with this one).
 AxisWeights cubic_weights(double c, std::span<const double> x, std::size_t kink) {
