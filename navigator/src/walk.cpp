@@ -158,7 +158,9 @@ Hit refine_exactly(const Path& path, const Hit& hit, double radius, double start
       // Not yet outside: extrapolate the last two points, at most 4 times farther; the last
       // render goes to the end, so that an offer the budget leaves inside is the end, flagged.
       next = f != f_prev ? s + (0 - f) * (s - prev) / (f - f_prev) : 2 * s;
-      if (!std::isfinite(next)) next = 2 * s;
+      // A distance that fell since the last render extrapolates backwards: go on toward the end
+      // as on a flat stretch, so that the path's end is rendered before the budget runs out.
+      if (!std::isfinite(next) || !(next > s)) next = 2 * s;
       next = std::clamp(next, s, std::min(end, std::max(4 * s, s + 1e-9)));
       if (k + 2 == steps.renders) next = end;
     }
