@@ -46,7 +46,7 @@ void print_info(const Database& db) {
     const std::span<const float> checks = db.blend_checks(g.model);
     const std::string name(model_info(g.model).name);
     if (checks.empty()) {
-      const std::string why = m.format_version < kOldestBlendCheckFormatVersion
+      const std::string why = !blend_checks_current(m)
                                   ? " usable (format version " + std::to_string(m.format_version) +
                                         ": any check was measured with an earlier spline)"
                                   : "";

@@ -159,7 +159,7 @@ void warn_of_rendered_finals(const Database& db, int resolution) {
   for (const ProfileGrid& g : m.grids)
     if (db.blend_checks(g.model).empty())
       missing += (missing.empty() ? "" : ", ") + std::string(model_info(g.model).name);
-  const std::string why = m.format_version < kOldestBlendCheckFormatVersion
+  const std::string why = !blend_checks_current(m)
                               ? "format version " + std::to_string(m.format_version) +
                                     ", checked with an earlier spline"
                               : "built before it";

@@ -110,7 +110,7 @@ std::optional<std::vector<float>> load_blend_check(const fs::path& dir, const Ma
   const std::string name = db::blend_check_file(g.model);
   if (!m.files.contains(name)) return std::nullopt;
   // Measured with another spline than the blend the thumbnails now show: it vouches for nothing.
-  if (m.format_version < kOldestBlendCheckFormatVersion) return std::nullopt;
+  if (!blend_checks_current(m)) return std::nullopt;
   const db::Table t = db::read_table(dir / name, std::uint32_t(g.grid.cell_count()), 1);
   for (std::size_t c = 0; c < t.values.size(); ++c)
     if (!std::isfinite(t.values[c]) || t.values[c] < 0)

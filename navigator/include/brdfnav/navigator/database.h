@@ -66,6 +66,12 @@ struct Manifest {
   std::map<std::string, std::string> files;  // path relative to the database -> SHA-1 (hex)
 };
 
+// Whether the database's blend checks were measured with the spline the blend now uses (format
+// version kOldestBlendCheckFormatVersion on); earlier ones describe another blend.
+inline bool blend_checks_current(const Manifest& m) {
+  return m.format_version >= kOldestBlendCheckFormatVersion;
+}
+
 // SHA-1 of a file's bytes in hex, as the manifest records it. Throws DatabaseError naming the file.
 std::string file_sha1(const std::filesystem::path& path);
 
