@@ -20,7 +20,9 @@ materials (rho_d 0.2 + 0.05 per page, so that no page is answered from another's
 starting at another place in the list above and taking R rings of it (--rings, default all).
 Then also the p95 over every page's rings, and the server's resident memory (VmRSS of
 /proc/PID/status, sampled twice a second: PID from --server-pid, else the `brdfnav serve`
-listening on the URL's port) at the start, its peak, at the end and its trend. --json adds a
+listening on the URL's port) at the start, its peak, half-way, at the end and its trend, with its anonymous
+and file-mapped parts; and which lobes were rendered rather than blended, per ring's model and
+tab. --json adds a
 last line of JSON with these figures.
 """
 
@@ -75,12 +77,16 @@ def server_pid(url):
 
 
 class RssSampler(threading.Thread):
-    """VmRSS of a process, in MiB, every `period` seconds until stop()."""
+    """A process's resident memory in MiB (VmRSS, and its parts RssAnon: heap and stacks, and
+    RssFile: mapped files such as the database's embeddings), every `period` seconds until
+    stop()."""
+
+    FIELDS = ("VmRSS", "RssAnon", "RssFile")
 
     def __init__(self, pid, period=0.5):
         super().__init__(daemon=True)
         self.path, self.period = f"/proc/{pid}/status", period
-        self.samples = []  # (seconds since start, MiB)
+        self.samples = []  # (seconds since start, {field: MiB})
         self.done = threading.Event()
         self.start_time = time.monotonic()
         self.sample()
@@ -88,12 +94,11 @@ class RssSampler(threading.Thread):
     def sample(self):
         try:
             with open(self.path) as f:
-                for line in f:
-                    if line.startswith("VmRSS:"):
-                        mib = int(line.split()[1]) / 1024
-                        self.samples.append((time.monotonic() - self.start_time, mib))
+                found = {line.split(":")[0]: int(line.split()[1]) / 1024 for line in f
+                         if line.split(":")[0] in self.FIELDS}
         except OSError as e:
             sys.exit(f"ring_latency.py: {self.path}: {e.strerror}")
+        self.samples.append((time.monotonic() - self.start_time, found))
 
     def run(self):
         while not self.done.wait(self.period):
@@ -116,13 +121,22 @@ class RssSampler(threading.Thread):
 
     def figures(self):
         """Start, peak and end MiB, and the trend over the run and over its second half (a cache
-        filling up grows at first; a leak keeps growing)."""
-        mibs = [m for _, m in self.samples]
-        half = self.samples[len(self.samples) // 2:]
-        return {"rss_start_mib": round(mibs[0], 1), "rss_peak_mib": round(max(mibs), 1),
-                "rss_end_mib": round(mibs[-1], 1),
-                "rss_trend_mib_per_min": round(self.slope(self.samples), 2),
-                "rss_trend_last_half_mib_per_min": round(self.slope(half), 2)}
+        filling up grows at first; a leak keeps growing), of VmRSS; the start, end and
+        second-half trend of its parts."""
+        out = {}
+        for field, key in (("VmRSS", "rss"), ("RssAnon", "anon"), ("RssFile", "file")):
+            series = [(t, f[field]) for t, f in self.samples if field in f]
+            if not series:
+                continue
+            mibs = [m for _, m in series]
+            half = series[len(series) // 2:]
+            out[f"{key}_start_mib"], out[f"{key}_end_mib"] = round(mibs[0], 1), round(mibs[-1], 1)
+            out[f"{key}_trend_last_half_mib_per_min"] = round(self.slope(half), 2)
+            if key == "rss":
+                out["rss_peak_mib"] = round(max(mibs), 1)
+                out["rss_mid_mib"] = round(half[0][1], 1)  # where the second half starts
+                out["rss_trend_mib_per_min"] = round(self.slope(series), 2)
+        return out
 
 
 class Page:
@@ -140,17 +154,17 @@ class Page:
             return (data, answer.headers.get(header)) if header else data
 
     def thumbnails(self, materials, preview, ring):
-        """How many of the thumbnails were renders (X-Brdfnav-Image), not blends."""
+        """The materials whose thumbnails were renders (X-Brdfnav-Image), not blends."""
         def one(m):
             body = {"material": m, "preview": preview, "ring": ring}
             return self.post("/api/thumbnail", body, "X-Brdfnav-Image")[1] == "render"
 
         with concurrent.futures.ThreadPoolExecutor(8) as pool:
-            return sum(pool.map(one, materials))
+            return [m for m, rendered in zip(materials, pool.map(one, materials)) if rendered]
 
     def click(self, current, tab):
-        """A new ring around `current`: (preview seconds or None, final seconds, renders among
-        its final images)."""
+        """A new ring around `current`: (preview seconds or None, final seconds, the materials
+        of its final images that were renders)."""
         self.ring += 1
         ring = {"client": self.client, "id": self.ring}
         started = time.monotonic()
@@ -186,6 +200,29 @@ def run_page(page, models, index, results, lock):
         preview, final, renders = page.click(material(model, fraction, rho_d), tab)
         with lock:
             results.append((model["name"], tab, preview, final, renders))
+
+
+def lobe_name(m):
+    """A rendered material's lobe, as a name: its colours vary from page to page, its lobe is
+    what the database's cells vouch for or not."""
+    return m["model"] + " " + " ".join(f"{k}={v:.6g}" for k, v in sorted(m["params"].items()))
+
+
+def print_renders(results):
+    """Which lobes were rendered, in which model's tab, and how often: where the database does
+    not vouch for its blends, which is where a ring waits."""
+    seen = {}
+    for model, tab, _, _, rendered in results:
+        for m in rendered:
+            key = (model, tab, lobe_name(m))
+            seen[key] = seen.get(key, 0) + 1
+    if not seen:
+        print("Every final image was a blend.\n")
+        return
+    print("| ring's model | tab | rendered lobe | images |\n|---|---|---|---:|")
+    for (model, tab, lobe), count in sorted(seen.items()):
+        print(f"| {model} | {tab} | {lobe} | {count} |")
+    print()
 
 
 def main():
@@ -246,12 +283,13 @@ def main():
         cells = []
         for tab in TABS:
             ring = [(f, r) for m, t, _, f, r in results if m == model["name"] and t == tab]
-            cells.append(f"{p95([f for f, _ in ring]):.3f} ({sum(r == 0 for _, r in ring)}/"
+            cells.append(f"{p95([f for f, _ in ring]):.3f} ({sum(not r for _, r in ring)}/"
                          f"{len(ring)})" if ring else "-")
         print(f"| {model['name']} | " + " | ".join(cells) + " |")
     print()
+    print_renders(results)
     summary = {"clients": args.clients, "rings": len(results),
-               "rings_without_render": sum(1 for *_, r in results if r == 0),
+               "rings_without_render": sum(1 for *_, r in results if not r),
                "final_p95_s": round(p95([f for _, _, _, f, _ in results]), 3)}
     previews = [p for _, _, p, _, _ in results if p is not None]
     if previews:
@@ -266,8 +304,12 @@ def main():
               (f", preview p95 {summary['preview_p95_s']:.3f} s" if previews else ""))
     if many or args.server_pid:
         print(f"server RSS: start {summary['rss_start_mib']} MiB, peak {summary['rss_peak_mib']} "
-              f"MiB, end {summary['rss_end_mib']} MiB, trend {summary['rss_trend_mib_per_min']} "
+              f"MiB, half-way {summary['rss_mid_mib']} MiB, end {summary['rss_end_mib']} MiB, trend {summary['rss_trend_mib_per_min']} "
               f"MiB/min ({summary['rss_trend_last_half_mib_per_min']} over the second half); "
+              f"of it anonymous {summary.get('anon_start_mib')} -> {summary.get('anon_end_mib')} "
+              f"MiB ({summary.get('anon_trend_last_half_mib_per_min')} MiB/min over the second "
+              f"half), mapped files {summary.get('file_start_mib')} -> "
+              f"{summary.get('file_end_mib')} MiB; "
               f"load average (1, 5, 15 min) at start {load_start}, at end {load_end}")
     if args.json:
         print(json.dumps(summary))

@@ -145,8 +145,20 @@ class Results(unittest.TestCase):
     def test_a_skipped_group_keeps_its_row(self):
         (self.saved / "ring8.skipped").write_text("no --clients\n")
         self.assertEqual(self.main("ring8", "host")[0], 0)
+        self.assertEqual(self.row("ring.clients8")[2:4], ["not measured yet", "-"])
+
+    def test_eight_clients_memory_is_flat_when_its_second_half_stays(self):
+        (self.saved / "ring8.txt").write_text(RING.replace("2.02", "1.50"))
+        self.put("ring8.stamp.json", STAMP)
+        self.put("ring8.memory.json", {"rss_start_mib": 150, "rss_mid_mib": 400,
+                                       "rss_end_mib": 430})
+        self.assertEqual(self.main("ring8")[0], 0)
         self.assertEqual(self.row("ring.clients8")[2:4],
-                         ["not measured yet: needs `ring_latency.py --clients`", "-"])
+                         ["1.50 s (blinn_phong); server RSS 150 -> 400 -> 430 MiB", "met"])
+        self.put("ring8.memory.json", {"rss_start_mib": 150, "rss_mid_mib": 400,
+                                       "rss_end_mib": 450})
+        self.assertEqual(self.main("ring8")[0], 0)
+        self.assertEqual(self.row("ring.clients8")[3], "**not met**")
 
     def assert_refused(self, names, *words):
         before = self.md.read_bytes()
