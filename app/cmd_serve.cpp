@@ -3,12 +3,14 @@
 // nothing is fetched from anywhere else.
 #include "commands.h"
 #include "serve_api.h"
+#include "serve_idle.h"
 #include "web_assets.h"
 
 #include <httplib.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -23,6 +25,11 @@ namespace {
 // Pool threads answering connections: enough for a few browser tabs' keep-alive connections
 // (6 each) and a burst of API requests beside them.
 constexpr int kServeThreads = 64;
+
+// How long nothing is asked before the server gives back what only queries in flight need
+// (IdleRelease): longer than an artist's pause between two clicks, so that the next click
+// rarely pays for reading pages back.
+constexpr std::chrono::seconds kIdleRelease{10};
 
 struct ServeOptions {
   std::string db;
@@ -50,8 +57,9 @@ const WebAsset* find_asset(const std::string& path) {
   return nullptr;
 }
 
-void add_routes(httplib::Server& server, const NavigatorApi& api) {
-  const auto handle = [&api](const httplib::Request& req, httplib::Response& res) {
+void add_routes(httplib::Server& server, const NavigatorApi& api, IdleRelease& idle) {
+  const auto handle = [&api, &idle](const httplib::Request& req, httplib::Response& res) {
+    const IdleRelease::Busy busy(idle);
     reply(req, res, api.handle({req.method, req.path, req.params, req.body}));
   };
   // Every POST and every request under /api/ is the API's (which refuses the methods a path
@@ -210,7 +218,8 @@ void serve(const ServeOptions& o) {
   with_context("--db", [&] {
     api = std::make_unique<const NavigatorApi>(ApiOptions{o.db, o.resolution});
   });
-  add_routes(server, *api);
+  IdleRelease idle(kIdleRelease, [&api] { api->release_memory(); });
+  add_routes(server, *api, idle);
   warn_of_rendered_finals(api->navigator().database(), o.resolution);
   if (o.host != "127.0.0.1" && o.host != "localhost" && o.host != "::1")
     std::fprintf(stderr, "brdfnav: warning: --host %s: reachable from other machines\n",

@@ -1,6 +1,7 @@
 #include "serve_api.h"
 
 #include "export_formats.h"
+#include "serve_idle.h"
 
 #include <brdfnav/io/material_yaml.h>
 #include <brdfnav/navigator/display_thumbnails.h>
@@ -340,6 +341,11 @@ NavigatorApi::NavigatorApi(const ApiOptions& options)
   sizes_.push_back(thumbnails_.resolution());
   for (int size : kSharpThumbnailSizes)
     if (size > sizes_.front()) sizes_.push_back(size);
+}
+
+void NavigatorApi::release_memory() const {
+  navigator_.release_pages();
+  trim_heap();
 }
 
 ApiResponse NavigatorApi::handle(const ApiRequest& r) const {

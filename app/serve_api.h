@@ -105,6 +105,11 @@ class NavigatorApi {
   // name FILE (default "upload") and the line.
   ApiResponse import_yaml(std::string_view body, std::string_view name) const;
 
+  // Returns to the system what only queries in flight need: the embeddings' mapped pages
+  // (Navigator::release_pages) and the heap the allocator keeps free (trim_heap). The caches
+  // of images stay. For a server with nothing to answer (IdleRelease).
+  void release_memory() const;
+
   const Navigator& navigator() const { return navigator_; }
 
  private:

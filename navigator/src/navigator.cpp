@@ -378,6 +378,10 @@ void Navigator::build_gallery() {
     gallery_embeddings_.col(static_cast<Eigen::Index>(i)) = embed(hit.material);
   }
   // The walks read every node's coefficients at every q; later queries read a few nodes'.
+  release_pages();
+}
+
+void Navigator::release_pages() const {
   for (const ProfileGrid& g : database_.manifest().grids) embedding_of(g.model).release_pages();
 }
 

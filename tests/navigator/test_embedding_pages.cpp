@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace brdfnav {
 namespace {
@@ -43,6 +44,29 @@ TEST(EmbeddingPages, OpeningHoldsNoneAndAQueryOnlyWhatItRead) {
   EXPECT_GT(resident_kb_of_mapping(coefficients), 0);
   ward.release_pages();
   EXPECT_EQ(resident_kb_of_mapping(coefficients), 0);
+}
+
+// What a server does when idle (serve's IdleRelease): every model's pages go back, and the next
+// query reads them again to the same answer.
+TEST(EmbeddingPages, TheNavigatorGivesBackEveryModelsPagesAndAnswersAsBefore) {
+  const Navigator navigator = Navigator::open(test::NavigationDatabase::get().dir());
+  Material m = default_material(ModelId::ward);
+  m.params = {0.05, 0.1};
+  const std::vector<Neighbor> before = navigator.neighbors(m, 0.03, Tab::models);
+  std::vector<const float*> mapped;
+  for (const ProfileGrid& g : navigator.database().manifest().grids)
+    mapped.push_back(navigator.database().embedding(g.model)->coefficients().data());
+  long held = 0;
+  for (const float* p : mapped) held += resident_kb_of_mapping(p);
+  EXPECT_GT(held, 0) << "the models tab read no other model's pages";
+  navigator.release_pages();
+  for (const float* p : mapped) EXPECT_EQ(resident_kb_of_mapping(p), 0);
+  const std::vector<Neighbor> after = navigator.neighbors(m, 0.03, Tab::models);
+  ASSERT_EQ(after.size(), before.size());
+  for (std::size_t i = 0; i < after.size(); ++i) {
+    EXPECT_EQ(after[i].material.params, before[i].material.params) << i;
+    EXPECT_EQ(after[i].distance, before[i].distance) << i;
+  }
 }
 
 }  // namespace

@@ -145,6 +145,12 @@ class Navigator {
   // The best fit of `m` in every other model of the database, in model order.
   std::vector<Equivalent> equivalents(const Material& m) const;
 
+  // Returns the pages of every model's mapped embedding to the system
+  // (ModelEmbedding::release_pages): they are read back from the page cache by the next query
+  // that needs them. For a long-running host between bursts of queries, which otherwise keeps
+  // every page any query has touched.
+  void release_pages() const;
+
  private:
   const ModelEmbedding& embedding_of(ModelId id) const;
   // A tab's offers in the order they were found, without their words.
