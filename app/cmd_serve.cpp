@@ -6,6 +6,8 @@
 #include "serve_idle.h"
 #include "web_assets.h"
 
+#include <ImfThreading.h>
+#include <OpenImageIO/imageio.h>
 #include <httplib.h>
 #include <unistd.h>
 
@@ -206,6 +208,13 @@ void serve(const ServeOptions& o) {
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+
+  // OpenEXR on the calling threads: its pool (OpenImageIO sizes it to the machine when it opens
+  // an EXR) handed each small database image's rows to other threads and back, which under 8
+  // pages at once cost more in futex hand-offs than the reading itself; the pool threads here
+  // are many already.
+  OIIO::attribute("exr_threads", -1);
+  Imf::setGlobalThreadCount(0);
 
   // The port first: opening a database verifies every file's checksum (seconds for the default
   // one), and a port in use should not wait for that. Connections made meanwhile wait in the

@@ -24,5 +24,6 @@ target_link_libraries(brdfnav_serve_api PUBLIC brdfnav::navigator_cxx brdfnav::p
                               OpenImageIO::OpenImageIO)
 
 target_sources(brdfnav_cli PRIVATE cmd_serve.cpp ${web_cpp})
+# OpenEXR: serve sets its thread pool (it reads the database's images through the navigator).
 target_link_libraries(brdfnav_cli PRIVATE brdfnav_serve_api PkgConfig::brdfnav_httplib
-                                          nlohmann_json::nlohmann_json)
+                                          nlohmann_json::nlohmann_json OpenEXR::OpenEXR)

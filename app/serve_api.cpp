@@ -274,7 +274,10 @@ std::string encode_png(const std::vector<std::uint8_t>& rgba, int width, int hei
   OIIO::Filesystem::IOVecOutput proxy(bytes);
   const char* name = "thumbnail.png";  // chooses the format; nothing is written to disk
   std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(name);
-  const OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
+  OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
+  // zlib's fastest level: at the default (6) deflating took a third of a loaded server's CPU
+  // (8 pages at once), for thumbnails 0.7 times the size (15 KB instead of 19 at 128 px).
+  spec.attribute("png:compressionLevel", 1);
   if (!out || !out->set_ioproxy(&proxy) || !out->open(name, spec) ||
       !out->write_image(OIIO::TypeDesc::UINT8, rgba.data()) || !out->close())
     throw std::runtime_error("cannot encode the thumbnail as PNG: " +
