@@ -16,7 +16,7 @@ add_custom_command(OUTPUT ${web_cpp}
   COMMENT "Embedding app/web into brdfnav" VERBATIM)
 
 # The request handling on its own, compiled once for the server and the fuzzer of tests/fuzz.
-add_library(brdfnav_serve_api STATIC serve_api.cpp serve_idle.cpp serve_rings.cpp)
+add_library(brdfnav_serve_api STATIC serve_api.cpp serve_memory.cpp serve_rings.cpp)
 target_include_directories(brdfnav_serve_api PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(brdfnav_serve_api PUBLIC brdfnav::navigator_cxx brdfnav::precompute brdfnav::ocio
                                                brdfnav_exact_thumbnails

@@ -1,7 +1,7 @@
 #include "serve_api.h"
 
 #include "export_formats.h"
-#include "serve_idle.h"
+#include "serve_memory.h"
 
 #include <brdfnav/io/material_yaml.h>
 #include <brdfnav/navigator/display_thumbnails.h>

@@ -337,9 +337,11 @@ def run_group(group, args, out):
         cmd += ["--exact"] if group == "fidelity-exact" else []
         run(cmd)
     elif group in ("ring", "ring8"):
-        # 8 pages, each through every model's and tab's rings (576 in all): long enough for the
-        # server's caches to fill, so that its memory's second half tells a leak from a cache.
-        extra = [] if group == "ring" else ["--clients", "8"]
+        # 8 pages, each through every model's and tab's rings at nine places along the grids
+        # (1,728 in all): more lobes than the server's caches hold, so that they evict, and long
+        # enough for the memory's second half to tell a leak from a cache filling up.
+        extra = [] if group == "ring" else [
+            "--clients", "8", "--fractions", ",".join(f"0.{i}" for i in range(1, 10))]
         memory = ring_run(cli, args.db, extra, out / f"{group}.txt")
         write_json(out / f"{group}.memory.json", memory)
         return shlex.join(["bin/brdfnav", "serve", "--db", "DB"]) + " & " + shlex.join(

@@ -4,10 +4,10 @@
 
     brdfnav serve --db DB --port 8080 &
     bench/ring_latency.py --url http://127.0.0.1:8080 [--exact] [--radius 0.03] \\
-        [--clients N [--rings R] [--server-pid PID]] [--json]
+        [--clients N [--rings R] [--server-pid PID]] [--fractions F,...] [--json]
 
 For each model of the database, three materials (each parameter at 30%, 50% and 70% of its grid,
-grey rho_d 0.2 and rho_s 0.3) and each of the lobe, diffuse, specular and models tabs, as the page
+or at --fractions, grey rho_d 0.2 and rho_s 0.3) and each of the lobe, diffuse, specular and models tabs, as the page
 does: under --exact, the embedding's ring (POST /api/neighbors) and the previews of the centre
 and its offers, 8 at a time as a browser fetches them (the "preview" time); then the query with
 "exact": true and the exact ring's thumbnails (the "final" time). Without --exact, the embedding's
@@ -180,6 +180,17 @@ class Page:
         return preview, time.monotonic() - started, renders
 
 
+def fractions(text):
+    """--fractions: comma-separated numbers in [0, 1]."""
+    try:
+        values = tuple(float(x) for x in text.split(","))
+    except ValueError:
+        values = ()
+    if not values or not all(0 <= v <= 1 for v in values):
+        raise argparse.ArgumentTypeError(f"expected numbers in [0, 1] separated by commas: {text!r}")
+    return values
+
+
 def material(model, fraction, rho_d=0.2):
     params = {}
     for p in model["params"]:
@@ -193,7 +204,8 @@ def run_page(page, models, index, results, lock):
     """Page `index` clicks through the rings of `models`; appends (model, tab, preview, final,
     renders) to `results`."""
     rho_d = 0.2 + 0.05 * index
-    rings = [(model, fraction, tab) for model in models for fraction in FRACTIONS for tab in TABS]
+    rings = [(model, fraction, tab) for model in models for fraction in page.args.fractions
+             for tab in TABS]
     start = index * len(rings) // page.args.clients
     order = rings[start:] + rings[:start]
     for model, fraction, tab in order[:page.args.rings or len(order)]:
@@ -233,6 +245,9 @@ def main():
     parser.add_argument("--clients", type=int, default=1, help="pages clicking at once")
     parser.add_argument("--rings", type=int, default=0, help="rings per page (0: all)")
     parser.add_argument("--server-pid", type=int, help="the server's pid, for its memory")
+    parser.add_argument("--fractions", type=fractions, default=FRACTIONS,
+                        help="where along each parameter's grid the materials are, as fractions "
+                             "(default: 0.3,0.5,0.7)")
     parser.add_argument("--json", action="store_true", help="a last line of JSON")
     args = parser.parse_args()
     if args.clients < 1 or args.rings < 0:

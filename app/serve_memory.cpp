@@ -1,4 +1,4 @@
-#include "serve_idle.h"
+#include "serve_memory.h"
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -56,6 +56,15 @@ void IdleRelease::run() {
 void trim_heap() {
 #if defined(__GLIBC__)
   ::malloc_trim(0);
+#endif
+}
+
+bool limit_heap_arenas(int arenas) {
+#if defined(__GLIBC__)
+  return arenas > 0 && ::mallopt(M_ARENA_MAX, arenas) == 1;
+#else
+  (void)arenas;
+  return false;
 #endif
 }
 

@@ -1,6 +1,6 @@
-// IdleRelease: the server's release runs once per quiet spell after requests, never while one is
-// in flight, and not before the first.
-#include "serve_idle.h"
+// A server's memory: IdleRelease's release runs once per quiet spell after requests, never while
+// one is in flight, and not before the first; the heap's arenas take a limit.
+#include "serve_memory.h"
 
 #include <gtest/gtest.h>
 
@@ -66,6 +66,13 @@ TEST(IdleRelease, AStopWhileIdleReturnsAtOnce) {
   // Not a speed target: an hour's wait not cut short would hang the test until CTest's timeout.
   EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::minutes(1));
 }
+
+#if defined(__GLIBC__)
+TEST(HeapArenas, GlibcTakesALimitAndRefusesNone) {
+  EXPECT_TRUE(limit_heap_arenas(2));
+  EXPECT_FALSE(limit_heap_arenas(0));
+}
+#endif
 
 }  // namespace
 }  // namespace brdfnav::cli
