@@ -176,6 +176,14 @@ std::optional<double> Database::blend_error(const Material& m) const {
   for (std::size_t d = 0; d < grid.dimensions(); ++d)
     if (!(m.params[d] >= grid.axis(d).front() && m.params[d] <= grid.axis(d).back()))
       return std::nullopt;
+  // On a node in every parameter the blend is that node's image: the database's own render, which
+  // the cell's check (at its midpoint) says nothing about.
+  bool on_node = true;
+  for (std::size_t d = 0; d < grid.dimensions() && on_node; ++d) {
+    const double c = grid.grid_coordinate(d, m.params[d]);
+    on_node = std::abs(c - std::round(c)) < kOnNode;
+  }
+  if (on_node) return 0.0;
   return it->second[grid.cell_index(m.params)];
 }
 

@@ -9,6 +9,8 @@
 #include <brdfnav/navigator/navigation_json.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <utility>
@@ -78,6 +80,25 @@ TEST(FinalImages, AVouchedCellShowsItsBlendAndAnyOtherItsRender) {
   EXPECT_EQ(strict.image(m, res)->rgba, exact.render(m)->rgba);
   EXPECT_FALSE(finals.shows_blend(high.material, res));
   EXPECT_EQ(finals.image(high.material, res)->rgba, exact.render(high.material)->rgba);
+}
+
+// A material on a node shows the node's image, the database's own render, even where the cells
+// around it are not vouched for.
+TEST(FinalImages, AMaterialOnANodeShowsItsImage) {
+  const Thumbnails blends(*suite().db, suite().resolution);
+  const ExactThumbnails exact(*suite().db, suite().resolution);
+  const auto [low, high] = extreme_cells();
+  const FinalImages finals(blends, exact, low.error);
+  const int res = suite().resolution;
+  Material m = high.material;
+  EXPECT_FALSE(finals.shows_blend(m, res));
+  const ParamGrid& grid = suite().db->embedding(m.model)->grid();
+  for (std::size_t d = 0; d < grid.dimensions(); ++d) {  // the cell's lowest corner
+    const auto i = static_cast<std::size_t>(std::floor(grid.grid_coordinate(d, m.params[d])));
+    m.params[d] = grid.axis(d)[std::min(i, grid.axis(d).size() - 2)];
+  }
+  EXPECT_TRUE(finals.shows_blend(m, res));
+  EXPECT_EQ(finals.image(m, res)->rgba, blends.render(m).rgba);
 }
 
 TEST(FinalImages, StepsAreMeasuredOnTheImagesShown) {

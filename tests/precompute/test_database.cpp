@@ -224,6 +224,23 @@ TEST(Database, RecordsTheBlendCheckOfEveryCell) {
       EXPECT_NEAR(*recorded, expected, 1e-6 + 1e-5 * expected) << model << " cell " << c;
     }
   }
+  // On a node in every parameter the blend is the node's image, whatever its cells' checks.
+  for (const ProfileGrid& g : db.manifest().grids) {
+    const std::string model(model_info(g.model).name);
+    const std::size_t node = g.grid.node_count() / 2;
+    Material m = default_material(g.model);
+    m.params = g.grid.node_values(node);
+    m.rho_d = Rgb::Zero(), m.rho_s = Rgb::Ones();
+    EXPECT_EQ(db.blend_error(m), 0.0) << model;
+    const std::vector<ParamGrid::Corner> corners = g.grid.cubic_corners(m.params);
+    ASSERT_EQ(corners.size(), 1u) << model;
+    EXPECT_EQ(corners[0].node, node) << model;
+    // Just off it, a millionth of a cell along the first parameter: its cell's check.
+    const std::vector<double>& axis = g.grid.axis(0);
+    const std::size_t i = std::min(g.grid.multi_index(node)[0], axis.size() - 2);
+    m.params[0] += 1e-6 * (axis[i + 1] - axis[i]) * (i == g.grid.multi_index(node)[0] ? 1 : -1);
+    EXPECT_GT(db.blend_error(m).value_or(0), 0.0) << model;
+  }
   EXPECT_FALSE(db.blend_error(default_material(ModelId::he)).has_value());  // not in the database
   // Beyond the grid (Ward's alpha_x from 0.02 to 0.3) the blend is the edge's: no cell vouches.
   Material beyond = default_material(ModelId::ward);

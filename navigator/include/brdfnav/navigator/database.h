@@ -107,8 +107,10 @@ class Database {
   // metric's distance between the thumbnails' blend and an exact render at the cell's midpoint,
   // for the lobe alone (rho_d = 0, rho_s = 1: the hardest case for the cube root). nullopt when
   // the database holds no check for the model (built before the check), or the material is not
-  // inside the grid (its blend would be the grid edge's).
+  // inside the grid (its blend would be the grid edge's). 0 for a material on a node in every
+  // parameter (within kOnNode of it in grid coordinates), whose blend is that node's image.
   std::optional<double> blend_error(const Material& m) const;
+  static constexpr double kOnNode = 1e-9;
   // Every cell's blend check of a model (ParamGrid::cell_index order); empty when it has none.
   std::span<const float> blend_checks(ModelId id) const;
 
