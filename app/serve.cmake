@@ -15,11 +15,15 @@ add_custom_command(OUTPUT ${web_cpp}
   DEPENDS ${web_deps} ${PROJECT_SOURCE_DIR}/cmake/embed_web.cmake
   COMMENT "Embedding app/web into brdfnav" VERBATIM)
 
+# What the server gives back when idle and how many heaps it keeps (serve_memory.h): std only.
+add_library(brdfnav_serve_memory STATIC serve_memory.cpp)
+target_include_directories(brdfnav_serve_memory PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+
 # The request handling on its own, compiled once for the server and the fuzzer of tests/fuzz.
-add_library(brdfnav_serve_api STATIC serve_api.cpp serve_memory.cpp serve_rings.cpp)
+add_library(brdfnav_serve_api STATIC serve_api.cpp serve_rings.cpp)
 target_include_directories(brdfnav_serve_api PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(brdfnav_serve_api PUBLIC brdfnav::navigator_cxx brdfnav::precompute brdfnav::ocio
-                                               brdfnav_exact_thumbnails
+                                               brdfnav_exact_thumbnails brdfnav_serve_memory
                       PRIVATE brdfnav_io brdfnav_export nlohmann_json::nlohmann_json
                               OpenImageIO::OpenImageIO)
 
