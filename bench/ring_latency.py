@@ -7,11 +7,12 @@
         [--clients N [--rings R] [--server-pid PID]] [--fractions F,...] [--json]
 
 For each model of the database, three materials (each parameter at 30%, 50% and 70% of its grid,
-or at --fractions, grey rho_d 0.2 and rho_s 0.3) and each of the lobe, diffuse, specular and models tabs, as the page
-does: under --exact, the embedding's ring (POST /api/neighbors) and the previews of the centre
-and its offers, 8 at a time as a browser fetches them (the "preview" time); then the query with
-"exact": true and the exact ring's thumbnails (the "final" time). Without --exact, the embedding's
-ring and its exact thumbnails. Every request names its ring ({client, id}) as the page does.
+or at --fractions; grey rho_d 0.2 and rho_s 0.3) and each of the lobe, diffuse, specular and
+models tabs, as the page does: under --exact, the embedding's ring (POST /api/neighbors) and the
+previews of the centre and its offers, 8 at a time as a browser fetches them (the "preview" time);
+then the query with "exact": true and the exact ring's thumbnails (the "final" time). Without
+--exact, the embedding's ring and its exact thumbnails. Every request names its ring ({client, id})
+as the page does.
 Prints median, p95 and max seconds per model. Start a fresh server for each run: its cache of
 renders would otherwise answer.
 
@@ -20,10 +21,9 @@ materials (rho_d 0.2 + 0.05 per page, so that no page is answered from another's
 starting at another place in the list above and taking R rings of it (--rings, default all).
 Then also the p95 over every page's rings, and the server's resident memory (VmRSS of
 /proc/PID/status, sampled twice a second: PID from --server-pid, else the `brdfnav serve`
-listening on the URL's port) at the start, its peak, half-way, at the end and its trend, with its anonymous
-and file-mapped parts; and which lobes were rendered rather than blended, per ring's model and
-tab. --json adds a
-last line of JSON with these figures.
+listening on the URL's port) at the start, its peak, half-way, at the end and its trend, with
+its anonymous and file-mapped parts; and which lobes were rendered rather than blended, per ring's
+model and tab. --json adds a last line of JSON with these figures.
 """
 
 import argparse

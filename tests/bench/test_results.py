@@ -63,7 +63,8 @@ class Results(unittest.TestCase):
         self.put("closures.benchmark.json", {"benchmarks": [
             benchmark(m, 30.0) for m in ("blinn_phong", "ward", "cook_torrance", "lafortune",
                                          "ggx")] + [benchmark("he", 1200.0)]})
-        self.put("ring.memory.json", {"rss_first_mib": 200, "rss_end_mib": 210})
+        self.put("ring.memory.json", {"rss_start_mib": 150, "rss_mid_mib": 200,
+                                      "rss_end_mib": 210})
         (self.saved / "ring.txt").write_text(RING)
         for group in ("host", "closures", "ring"):
             self.put(f"{group}.stamp.json", STAMP)
