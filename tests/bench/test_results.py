@@ -3,6 +3,7 @@
 rewritten with their figures and verdicts, the other rows and the text around the table stay as
 they were, and a malformed input fails with an error naming it and leaves RESULTS.md untouched."""
 
+import argparse
 import contextlib
 import io
 import json
@@ -13,6 +14,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
 import results  # noqa: E402
+import ring_latency  # noqa: E402
 
 OLD_ROW = ("| navigator.lobe | lobe tab query p99 <= 1 ms | 0.524 ms | met | 2026-12-06 10:00 "
            "| e83a27a | Intel(R) Xeon(R) Processor, 2 cores, load 0.3 -> 0.5 "
@@ -204,6 +206,19 @@ class Results(unittest.TestCase):
     def test_missing_markers_are_refused(self):
         self.md.write_text(TABLE.replace(results.END, ""))
         self.assert_refused(["host"], "RESULTS.md", results.END)
+
+
+class RingLatencyFractions(unittest.TestCase):
+    """ring_latency.py --fractions: numbers in [0, 1], refused otherwise with what was given."""
+
+    def test_reads_numbers_between_zero_and_one(self):
+        self.assertEqual(ring_latency.fractions("0.1,0.5,1"), (0.1, 0.5, 1.0))
+
+    def test_refuses_anything_else_naming_it(self):
+        for text in ("0.1,2", "a,b", "", "-0.1"):
+            with self.assertRaises(argparse.ArgumentTypeError) as refused:
+                ring_latency.fractions(text)
+            self.assertIn(repr(text), str(refused.exception))
 
 
 if __name__ == "__main__":
