@@ -1,20 +1,22 @@
 // precompute_database(): the build of a database in four resumable phases (render, embed, fit,
-// blend check) and its atomic completion (manifest, rename).
+// blend check) and its atomic completion (manifest, rename); a shard's build (its share of the
+// node images and of the blend check's renders) and the merge of the shards.
 #include <brdfnav/precompute/database.h>
 
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/core/parallel_for.h>
 #include <brdfnav/navigator/blend.h>
 #include <brdfnav/navigator/database_format.h>
-#include <brdfnav/precompute/image_output.h>
 #include <brdfnav/precompute/render.h>
+#include "image_writer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <functional>
-#include <future>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 namespace brdfnav {
@@ -89,38 +91,35 @@ ImageMetadata image_metadata(const Renderer& renderer, const Material* material)
   return m;
 }
 
-struct PendingFile {
-  Image image;
-  fs::path path;
-  ImageMetadata metadata;
-};
+// A shard's render of a grid cell's midpoint for the blend check, which the merge measures: not
+// a database file. Full floats, so that the merge's distances are the single-machine build's.
+constexpr const char* kCellsDir = "cells";
+std::string cell_image_file(ModelId id, std::size_t cell) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%05zu.exr", cell);
+  return std::string(kCellsDir) + "/" + std::string(model_info(id).name) + "/" + name;
+}
 
-// Writes each unit's images (ExrPixels::half_raw) on a thread of its own while the next unit
-// renders. One unit in flight; its errors are rethrown by the next write() or by finish().
-// `written` is called once per file written, on the caller's thread, as the progress observer
-// expects. If a render fails, destruction waits for the write in flight (std::async's future).
-class ImageWriter {
- public:
-  explicit ImageWriter(std::function<void()> written) : written_(std::move(written)) {}
+// The midpoints of a grid's cells as the blend check renders them: their materials (rho_d = 0,
+// rho_s = 1) and lobes, in the groups rendered in one pass (those that share their quadrature:
+// He's cells along eta, Cook-Torrance's along f0), each image as Renderer::render() gives it alone.
+struct GridCells {
+  std::vector<Material> materials;
+  std::vector<Lobe> lobes;
+  std::vector<std::vector<std::size_t>> groups;
 
-  void write(std::vector<PendingFile> files) {
-    finish();
-    count_ = files.size();
-    in_flight_ = std::async(std::launch::async, [files = std::move(files)] {
-      for (const PendingFile& f : files)
-        write_exr(f.image, f.path, f.metadata, ExrPixels::half_raw);
-    });
+  explicit GridCells(const ProfileGrid& g) {
+    for (std::size_t c = 0; c < g.grid.cell_count(); ++c) {
+      materials.push_back(node_material(g.model, g.grid.cell_midpoint(c)));
+      lobes.push_back(make_lobe(g.model, materials.back().params));
+    }
+    groups = quadrature_groups(lobes, kFresnelBatch);
   }
-  void finish() {
-    if (!in_flight_.valid()) return;
-    in_flight_.get();
-    for (; count_ > 0; --count_) written_();
+  std::vector<Lobe> batch(const std::vector<std::size_t>& group) const {
+    std::vector<Lobe> b;
+    for (std::size_t c : group) b.push_back(lobes[c]);
+    return b;
   }
-
- private:
-  std::function<void()> written_;
-  std::future<void> in_flight_;
-  std::size_t count_ = 0;
 };
 
 class Job {
@@ -137,6 +136,7 @@ class Job {
     prepare();
     timed("render", [&] { render_images(); });
     if (r_.shard_count > 1) {
+      timed("cells", [&] { render_cells(); });
       finish_shard();
       return;
     }
@@ -162,6 +162,23 @@ class Job {
     if (r_.observer.progress) r_.observer.progress(phase, done, total);
   }
   fs::path at(const std::string& relative) const { return work_ / relative; }
+
+  // One renderer for every phase that renders, made when the first needs it (a merge whose
+  // shards rendered everything needs none).
+  Renderer& renderer() {
+    if (!renderer_) {
+      RenderOptions options;
+      options.threads = r_.threads;
+      options.quality = p_.quality;
+      renderer_.emplace(env_, scene_, p_.resolution, options);
+    }
+    return *renderer_;
+  }
+  // Whether the next unit of work (the diffuse image, then every grid's render units, then, in a
+  // shard, every grid's cell groups) is this shard's: units are dealt round robin.
+  bool next_unit_mine() {
+    return unit_++ % std::size_t(r_.shard_count) == std::size_t(r_.shard_index);
+  }
 
   // The work directory, fresh or (with --resume) checked against the settings it was started with.
   void prepare() {
@@ -200,26 +217,21 @@ class Job {
   }
 
   void render_images() {
-    RenderOptions options;
-    options.threads = r_.threads;
-    options.quality = p_.quality;
-    Renderer renderer(env_, scene_, p_.resolution, options);
     const std::size_t total = p_.image_count();
     std::size_t done = 0, reused = 0;
     ImageWriter writer([&] { progress("render", ++done, total); });
     progress("render", 0, total);
-    std::size_t unit = 0;
-    if (!mine(unit++) || reusable_image(at(db::kDiffuseFile))) {
+    if (!next_unit_mine() || reusable_image(at(db::kDiffuseFile))) {
       ++reused;
     } else {
-      write_exr(renderer.diffuse(), at(db::kDiffuseFile), image_metadata(renderer, nullptr),
+      write_exr(renderer().diffuse(), at(db::kDiffuseFile), image_metadata(renderer(), nullptr),
                 ExrPixels::half_raw);
     }
     progress("render", ++done, total);
     for (const ProfileGrid& g : p_.grids) {
       for (const std::vector<std::size_t>& nodes : grid_render_units(g.model, g.grid)) {
         std::vector<std::size_t> pending;
-        const bool assigned = mine(unit++);
+        const bool assigned = next_unit_mine();
         for (std::size_t node : nodes) {
           if (!assigned || reusable_image(at(db::image_file(g.model, node)))) {
             ++reused;
@@ -228,12 +240,13 @@ class Job {
             pending.push_back(node);
           }
         }
-        std::vector<Image> images = renderer.grid_images(g.model, g.grid, pending);
+        if (pending.empty()) continue;
+        std::vector<Image> images = renderer().grid_images(g.model, g.grid, pending);
         std::vector<PendingFile> files;
         for (std::size_t k = 0; k < pending.size(); ++k) {
           const Material m = node_material(g.model, g.grid.node_values(pending[k]));
           files.push_back({std::move(images[k]), at(db::image_file(g.model, pending[k])),
-                           image_metadata(renderer, &m)});
+                           image_metadata(renderer(), &m)});
         }
         writer.write(std::move(files));
       }
@@ -243,15 +256,53 @@ class Job {
         (r_.shard_count > 1 ? " reused or left to other shards" : " reused"));
   }
 
-  bool mine(std::size_t unit) const {
-    return unit % std::size_t(r_.shard_count) == std::size_t(r_.shard_index);
+  // A shard's part of the blend check: the renders of its cell groups' midpoints
+  // (cell_image_file()), which the merge measures once it has every node image. Without them the
+  // merge alone would render every cell, about as long as the whole render phase on its CPUs.
+  void render_cells() {
+    std::size_t total = 0, done = 0, reused = 0;
+    for (const ProfileGrid& g : p_.grids) total += g.grid.cell_count();
+    ImageWriter writer([&] { progress("cells", ++done, total); });
+    progress("cells", 0, total);
+    for (const ProfileGrid& g : p_.grids) {
+      fs::create_directories(at(cell_image_file(g.model, 0)).parent_path());
+      const GridCells cells(g);
+      for (const std::vector<std::size_t>& group : cells.groups) {
+        std::vector<std::size_t> pending;
+        const bool assigned = next_unit_mine();
+        for (std::size_t c : group) {
+          if (!assigned || reusable_image(at(cell_image_file(g.model, c)))) {
+            ++reused;
+            progress("cells", ++done, total);
+          } else {
+            pending.push_back(c);
+          }
+        }
+        if (pending.empty()) continue;
+        std::vector<Image> images = renderer().specular(cells.batch(pending));
+        std::vector<PendingFile> files;
+        for (std::size_t k = 0; k < pending.size(); ++k)
+          files.push_back({std::move(images[k]), at(cell_image_file(g.model, pending[k])),
+                           image_metadata(renderer(), &cells.materials[pending[k]]),
+                           ExrPixels::float_zip});
+        writer.write(std::move(files));
+      }
+    }
+    writer.finish();
+    log("cells: " + std::to_string(total) + " cell midpoints, " + std::to_string(reused) +
+        " reused or left to other shards");
   }
 
-  // A shard: its images and shard.yaml (the settings, i/N and the images' checksums).
+  // A shard: its images, its cells' renders and shard.yaml (the settings, i/N and the files'
+  // checksums).
   void finish_shard() {
     db::FileSums sums;
     for (const std::string& f : db::database_files(p_.grids))
       if (f.ends_with(".exr") && fs::exists(at(f))) sums[f] = file_sha1(at(f));
+    for (const ProfileGrid& g : p_.grids)
+      for (std::size_t c = 0; c < g.grid.cell_count(); ++c)
+        if (const std::string f = cell_image_file(g.model, c); fs::exists(at(f)))
+          sums[f] = file_sha1(at(f));
     const std::string text =
         db::shard_yaml(build_settings(p_, env_, scene_), r_.shard_index, r_.shard_count, sums);
     write_file_atomic(at(db::kShardFile), text);
@@ -369,13 +420,9 @@ class Job {
   // navigator's exact thumbnails render (Renderer::render, here several lobes a pass). Lets a
   // server show the blend as the final image where it is faithful (docs/NAVIGATION.md). A model's
   // table is written once all its cells are measured; a resumed build keeps the finished ones.
-  void check_blends() const {
-    RenderOptions options;
-    options.threads = r_.threads;
-    options.quality = p_.quality;
-    Renderer renderer(env_, scene_, p_.resolution, options);
+  void check_blends() {
     const Image diffuse = read_image(at(db::kDiffuseFile));
-    std::size_t total = 0, done = 0;
+    std::size_t total = 0, done = 0, rendered = 0;
     for (const ProfileGrid& g : p_.grids) total += g.grid.cell_count();
     progress("blend check", 0, total);
     for (const ProfileGrid& g : p_.grids) {
@@ -388,32 +435,41 @@ class Job {
       std::vector<Image> nodes;
       for (std::size_t n = 0; n < g.grid.node_count(); ++n)
         nodes.push_back(read_image(at(db::image_file(g.model, n))));
-      // The midpoints' renders in the groups that share their quadrature (He's cells along eta,
-      // Cook-Torrance's along f0), each image as Renderer::render() gives it alone.
-      std::vector<Material> cells;
-      std::vector<Lobe> lobes;
-      for (std::size_t c = 0; c < g.grid.cell_count(); ++c) {
-        cells.push_back(node_material(g.model, g.grid.cell_midpoint(c)));
-        lobes.push_back(make_lobe(g.model, cells.back().params));
-      }
-      db::Table t{std::uint32_t(g.grid.cell_count()), 1, std::vector<float>(cells.size())};
-      for (const std::vector<std::size_t>& group : quadrature_groups(lobes, kFresnelBatch)) {
-        std::vector<Lobe> batch;
-        for (std::size_t c : group) batch.push_back(lobes[c]);
-        const std::vector<Image> rendered = renderer.specular(batch);
+      const GridCells cells(g);
+      db::Table t{std::uint32_t(g.grid.cell_count()), 1, std::vector<float>(cells.lobes.size())};
+      for (const std::vector<std::size_t>& group : cells.groups) {
+        const std::vector<Image> exact = cell_images(g.model, cells, group, rendered);
         for (std::size_t k = 0; k < group.size(); ++k) {
-          const Material& m = cells[group[k]];
+          const Material& m = cells.materials[group[k]];
           const std::vector<ParamGrid::Corner> corners = g.grid.cubic_corners(m.params);
           std::vector<const Image*> images;
           for (const ParamGrid::Corner& n : corners) images.push_back(&nodes[n.node]);
           const Image blend = blend_images(diffuse, corners, images, m.rho_d, m.rho_s);
-          const Image exact = compose(diffuse, rendered[k], m.rho_d, m.rho_s);
-          t.values[group[k]] = float(image_distance(blend, exact));
+          t.values[group[k]] =
+              float(image_distance(blend, compose(diffuse, exact[k], m.rho_d, m.rho_s)));
           progress("blend check", ++done, total);
         }
       }
       db::write_table(path, t);
     }
+    log("blend check: " + std::to_string(total) + " cells, " + std::to_string(rendered) +
+        " midpoints rendered here" + (rendered < total ? " (the others by the shards)" : ""));
+  }
+
+  // A cell group's midpoint renders: the shards' (merged into cells/) when they made every one
+  // of the group, else rendered here, as the shards render them.
+  std::vector<Image> cell_images(ModelId model, const GridCells& cells,
+                                 const std::vector<std::size_t>& group, std::size_t& rendered) {
+    const auto from_shard = [&](std::size_t c) {
+      return fs::exists(at(cell_image_file(model, c)));
+    };
+    if (std::all_of(group.begin(), group.end(), from_shard)) {
+      std::vector<Image> images;
+      for (std::size_t c : group) images.push_back(read_image(at(cell_image_file(model, c))));
+      return images;
+    }
+    rendered += group.size();
+    return renderer().specular(cells.batch(group));
   }
 
   // Checksums every file, writes the manifest, drops what is not part of the database (the
@@ -438,6 +494,7 @@ class Job {
         stray.push_back(e.path());
     }
     for (const fs::path& f : stray) fs::remove(f);
+    fs::remove_all(at(kCellsDir));  // the shards' midpoint renders, measured; now empty folders
     std::error_code ec;
     fs::rename(work_, r_.out, ec);
     if (ec)
@@ -452,6 +509,8 @@ class Job {
   const Scene& scene_;
   fs::path work_;
   int threads_;
+  std::optional<Renderer> renderer_;
+  std::size_t unit_ = 0;
 };
 
 }  // namespace
@@ -484,6 +543,11 @@ void take_shard(const fs::path& shard, const std::string& settings, const fs::pa
     throw DatabaseError(file + ": shard " + name + " given twice");
   seen[std::size_t(o.shard_index)] = true;
   for (const auto& [relative, sha] : o.files) {
+    // A shard names files inside itself: nothing may be copied outside the work directory.
+    const fs::path rel(relative);
+    if (rel.is_absolute() || rel.empty() ||
+        std::any_of(rel.begin(), rel.end(), [](const fs::path& part) { return part == ".."; }))
+      throw DatabaseError(file + ": '" + relative + "' is not a path inside the shard");
     if (file_sha1(shard / relative) != sha)
       throw DatabaseError((shard / relative).string() + ": checksum mismatch");
     fs::create_directories((work / relative).parent_path());

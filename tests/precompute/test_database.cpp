@@ -6,8 +6,9 @@
 #include <brdfnav/studies/fit_study.h>
 #include <gtest/gtest.h>
 
+#include "database_fixture.h"
+
 #include <OpenImageIO/imageio.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,67 +20,9 @@ namespace brdfnav {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A three-model profile (He is by far the slowest model to render) at 8 x 8: the pipeline is the
-// same as for the named profiles, at a size that keeps each test process (ctest runs every case
-// in its own process, each building the fixture) at a few seconds.
-Profile tiny_profile() {
-  Profile p = make_profile("smoke");
-  p.name = "unit";
-  p.resolution = 8;
-  p.pca.components = 400;  // more than the data's rank: the embedding is then lossless
-  p.grids = {
-      {ModelId::blinn_phong, ParamGrid(model_info(ModelId::blinn_phong).params, {{5, 2000}})},
-      {ModelId::ward, ParamGrid(model_info(ModelId::ward).params, {{0.02, 0.3}, {0.02, 0.3}})},
-      {ModelId::lafortune,
-       ParamGrid(model_info(ModelId::lafortune).params, {{0.54, 0.57735026918962573}, {8, 800}})},
-  };
-  return p;
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("brdfnav_test_database_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::remove_all(dir.string() + ".partial");
-  fs::create_directories(dir.parent_path());
-  return dir;
-}
+using namespace test;
 
 struct Interrupted {};
-
-struct Fixture {
-  EnvMap env = EnvMap::load(kDefaultEnvPath, {}, [](const std::string&) {});
-  Scene scene = Scene::sphere();
-  fs::path db = scratch("reference");
-
-  Fixture() { precompute_database({tiny_profile(), db, false, 0, {}}, env, scene); }
-  ~Fixture() { fs::remove_all(db.parent_path()); }
-};
-
-Fixture& fixture() {
-  static Fixture f;
-  return f;
-}
-
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_bytes(const fs::path& p, const std::string& bytes) {
-  std::ofstream(p, std::ios::binary) << bytes;
-}
-
-// Every file below `dir`, relative path -> contents.
-std::map<std::string, std::string> tree(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file()) files[fs::relative(e.path(), dir).generic_string()] = read_bytes(e);
-  return files;
-}
 
 // A copy of the reference database to damage.
 fs::path copy_of_reference(const std::string& name) {
@@ -561,40 +504,6 @@ TEST(Database, RenderProgressFollowsTheWrittenImages) {
   precompute_database(request, f.env, f.scene);
   ASSERT_EQ(reported.size(), render_total);
   for (std::size_t i = 0; i < reported.size(); ++i) EXPECT_EQ(reported[i], i + 1);
-}
-
-// Two shards render disjoint halves of the images; merged, they give the reference database
-// byte for byte. A merge with a shard missing or given twice is refused.
-TEST(Database, ShardsMergeIntoTheSameDatabase) {
-  const Fixture& f = fixture();
-  std::vector<fs::path> shards;
-  for (int i = 0; i < 2; ++i) {
-    shards.push_back(scratch("shard" + std::to_string(i)));
-    PrecomputeRequest request{tiny_profile(), shards.back(), false, 0, {}};
-    request.shard_index = i, request.shard_count = 2;
-    precompute_database(request, f.env, f.scene);
-    EXPECT_TRUE(fs::exists(shards.back() / "shard.yaml"));
-  }
-  EXPECT_TRUE(fs::exists(shards[0] / "diffuse.exr"));
-  EXPECT_FALSE(fs::exists(shards[1] / "diffuse.exr"));
-  const fs::path merged = scratch("merged");
-  const PrecomputeRequest request{tiny_profile(), merged, false, 0, {}};
-  try {
-    merge_shards({shards[0], shards[0]}, request, f.env, f.scene);
-    ADD_FAILURE() << "merged a shard twice";
-  } catch (const DatabaseError& e) {
-    EXPECT_NE(std::string(e.what()).find("given twice"), std::string::npos) << e.what();
-  }
-  fs::remove_all(merged.string() + ".partial");
-  try {
-    merge_shards({shards[1]}, request, f.env, f.scene);
-    ADD_FAILURE() << "merged without shard 0";
-  } catch (const DatabaseError& e) {
-    EXPECT_NE(std::string(e.what()).find("shard 0/2 is missing"), std::string::npos) << e.what();
-  }
-  fs::remove_all(merged.string() + ".partial");
-  merge_shards(shards, request, f.env, f.scene);
-  EXPECT_EQ(tree(merged), tree(f.db));
 }
 
 }  // namespace

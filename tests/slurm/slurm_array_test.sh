@@ -8,11 +8,13 @@
 #
 #   1. 3 shards of PROFILE and the dependent merge: the database is byte-identical to
 #      REFERENCE_DB, the single-machine build of the same settings (CTest's test_database).
-#   2. Again, with array task 1 killed in the middle of its work (scancel --signal=KILL) and
-#      requeued (scontrol requeue): the task resumes from its finished images, which it keeps
-#      as they were, and the database is still identical.
-#   3. Again, with task 1 killed and not requeued: the merge fails, naming shard 1; submit.sh
-#      run again submits shard 1 alone, which resumes, and the database is still identical.
+#   2. Again, from run 1's finished shard 0 (copied: submit.sh keeps it and submits shards 1
+#      and 2), with array task 1 killed in the middle of its work (scancel --signal=KILL) and
+#      requeued (scontrol requeue) while task 2 runs: the task resumes from its finished images,
+#      which it keeps as they were, and the database is still identical.
+#   3. Again from shards 0 and 2, with task 1 killed and not requeued: the merge fails, naming
+#      shard 1; submit.sh run again submits shard 1 alone, which resumes, and the database is
+#      still identical.
 #
 # Exit 77 (CTest's SKIP_RETURN_CODE) with the reason when it cannot run here: not root, Slurm or
 # munge not installed, or the daemons do not start. BRDFNAV_REQUIRE_SLURM=1 makes that a
@@ -248,16 +250,20 @@ submit() {  # RUN OUT: work and database in T/RUN, submit.sh's output in OUT
     MERGE_MEM=1G MERGE_TIME=10 "$SCRIPTS/submit.sh") >"$2" 2>&1 || fail "submit.sh: $(cat "$2")"
 }
 job_of() { sed -n "s/^submit.sh: $1 job \([0-9]*\).*/\1/p" "$2"; }
+shard_1_alone() {  # OUT: submit.sh submitted the array of shard 1 alone
+  grep -q "^submit.sh: array job $(job_of array "$1"): shards 1 of 0-2$" "$1" ||
+    fail "submit.sh did not submit shard 1 alone: $(cat "$1")"
+}
 state() { scontrol show job "$1" | sed -n 's/.*JobState=\([A-Z_]*\).*/\1/p'; }
-wait_idle() {  # until no job is queued or running (at most 150 s)
+wait_idle() {  # until no job is queued or running (at most 600 s: CI runs other tests beside)
   local k
-  for ((k = 0; k < 1500; k++)); do
+  for ((k = 0; k < 6000; k++)); do
     squeue -h -o %i | grep -q . || return 0
     check_daemons
     sleep 0.1
   done
   squeue
-  fail "jobs still queued or running after 150 s"
+  fail "jobs still queued or running after 600 s"
 }
 same_as_reference() {  # DB
   [[ -f $1/manifest.yaml ]] || fail "$1: no database was written"
@@ -269,6 +275,16 @@ $diffs"
 # A run whose checks passed is removed while the next one runs: some 3,000 files, whose removal
 # takes seconds on a disk mounted with discard.
 discard_run() { [[ -n ${BRDFNAV_SLURM_TEST_KEEP:-} ]] || rm -rf "${T:?}/${1:?}" & }
+# Run 1's finished SHARDS copied into RUN's work directory: runs 2 and 3 test shard 1's kill and
+# resumption, and rendering the others again would only add to the test's time. Run 2 keeps
+# shard 2 to render: a task requeued once its array has ended is too late, the merge has run.
+seed_run() {  # RUN SHARD...
+  local run=$1 i
+  shift
+  mkdir -p "$T/$run/work"
+  for i in "$@"; do cp -a "$T/run1/work/shard-$i" "$T/$run/work/"; done
+}
+# The files of a shard: its node images and its cell midpoints (precompute's blend check).
 images_in() { { find "$1" -name '*.exr' ! -name '.*' -type f 2>/dev/null || true; } | wc -l; }
 
 # Kills array task I of job A in the middle of its work: once it has finished at least one
@@ -286,7 +302,7 @@ kill_mid_work() {  # A I WORK TOTAL
     case $(state "${a}_$i") in PENDING | RUNNING | COMPLETING | CONFIGURING) sleep 0.1 ;; *) break ;; esac
   done
   n=$(images_in "$work/shard-$i.partial")
-  note "task ${a}_$i: $(state "${a}_$i") by scancel --signal=KILL with $n of its $total images written"
+  note "task ${a}_$i: $(state "${a}_$i") by scancel --signal=KILL with $n of its $total files written"
   [[ ! -e $work/shard-$i ]] || fail "shard $i finished before the kill took effect"
   ((n >= 1 && n < total)) || fail "shard $i had $n of $total images at the kill"
 }
@@ -295,8 +311,11 @@ image_stamps() {
   [[ -d $1 ]] || fail "$1: no such directory"
   (cd "$1" && find . -name '*.exr' ! -name '.*' -type f -printf '%P %i %T@\n' | sort)
 }
-rendered() {  # LOG: the images brdfnav's last "render: N images, M reused ..." line rendered
-  sed -n 's/^brdfnav: render: \([0-9]*\) images, \([0-9]*\) reused.*/\1 - \2/p' "$1" | tail -n 1
+rendered() {  # LOG: the files rendered, by the last "render: N images, M reused ..." line and
+  # the last "cells: N cell midpoints, M reused ..." line
+  printf '%s + %s' \
+    "$(sed -n 's/^brdfnav: render: \([0-9]*\) images, \([0-9]*\) reused.*/\1 - \2/p' "$1" | tail -n 1)" \
+    "$(sed -n 's/^brdfnav: cells: \([0-9]*\) cell midpoints, \([0-9]*\) reused.*/\1 - \2/p' "$1" | tail -n 1)"
 }
 
 # 1. Three shards and the merge.
@@ -310,22 +329,28 @@ logs1=$T/run1/work/logs
 for i in 0 1 2; do
   [[ $(state "${a1}_$i") == COMPLETED ]] || fail "task ${a1}_$i: $(state "${a1}_$i"):
 $(cat "$logs1/shard-${a1}_$i.log")"
-  for line in "\] start on" "^render: 100%" "^brdfnav: shard written" "\] finished in"; do
+  for line in "\] start on" "^render: 100%" "^cells: 100%" "^brdfnav: shard written" "\] finished in"; do
     grep -q "$line" "$logs1/shard-${a1}_$i.log" ||
       fail "task $i's log has no line matching '$line': $(cat "$logs1/shard-${a1}_$i.log")"
   done
   total[i]=$(grep -c '\.exr: ' "$T/run1/work/shard-$i/shard.yaml")
 done
 [[ $(state "$m1") == COMPLETED ]] || fail "merge job $m1: $(state "$m1"): $(cat "$logs1/merge-$m1.log")"
+grep -q "^brdfnav: blend check: [0-9]* cells, 0 midpoints rendered here" "$logs1/merge-$m1.log" ||
+  fail "the merge rendered cell midpoints the shards should have: $(cat "$logs1/merge-$m1.log")"
 same_as_reference "$T/run1/db"
-note "run 1: shards of ${total[*]} images; task 1's log:"
+note "run 1: shards of ${total[*]} files (node images and cell midpoints); task 1's log:"
 sed 's/^/    /' "$logs1/shard-${a1}_1.log" | grep -v '^    [a-z ]*: [1-9]0%$'
+seed_run run2 0
+seed_run run3 0 2
 discard_run run1
 
 # 2. Task 1 killed in the middle of its work, requeued: it resumes.
-note "run 2: task 1 killed in the middle of its work, then requeued"
+note "run 2: shard 0 of run 1; task 1 killed in the middle of its work, then requeued"
 out2=$T/run2.submit.out
 submit run2 "$out2"
+grep -q "^submit.sh: array job $(job_of array "$out2"): shards 1-2 of 0-2$" "$out2" ||
+  fail "submit.sh did not keep shard 0: $(cat "$out2")"
 a2=$(job_of array "$out2") m2=$(job_of merge "$out2")
 work2=$T/run2/work
 kill_mid_work "$a2" 1 "$work2" "${total[1]}"
@@ -345,15 +370,19 @@ after=$(image_stamps "$work2/shard-1")
 kept=$(comm -12 <(echo "$before") <(echo "$after") | wc -l)
 ((kept == $(echo "$before" | wc -l))) ||
   fail "images finished before the kill were written again: $(comm -23 <(echo "$before") <(echo "$after") | head)"
-note "run 2: the requeued task kept the $kept images finished before the kill (same inode and" \
-  "time) and rendered $(($(rendered "$log2"))) of its ${total[1]}"
+again=$(($(rendered "$log2")))
+((again + kept == total[1])) ||
+  fail "the requeued task rendered $again files and kept $kept: not the shard's ${total[1]}"
+note "run 2: the requeued task kept the $kept files finished before the kill (same inode and" \
+  "time) and rendered the other $again of its ${total[1]}"
 same_as_reference "$T/run2/db"
 discard_run run2
 
 # 3. Task 1 killed, not requeued: the merge fails naming it; submitting again redoes it alone.
-note "run 3: task 1 killed and not requeued, then submit.sh again"
+note "run 3: shards 0 and 2 of run 1; task 1 killed and not requeued, then submit.sh again"
 out3=$T/run3.submit.out
 submit run3 "$out3"
+shard_1_alone "$out3"
 a3=$(job_of array "$out3") m3=$(job_of merge "$out3")
 work3=$T/run3/work
 kill_mid_work "$a3" 1 "$work3" "${total[1]}"
@@ -365,9 +394,8 @@ note "run 3: merge $m3 failed as it should:"
 sed 's/^/    /' "$work3/logs/merge-$m3.log"
 out3b=$T/run3.submit-again.out
 submit run3 "$out3b"
+shard_1_alone "$out3b"
 a3b=$(job_of array "$out3b") m3b=$(job_of merge "$out3b")
-grep -q "^submit.sh: array job $a3b: shards 1 of 0-2$" "$out3b" ||
-  fail "submit.sh again did not submit shard 1 alone: $(cat "$out3b")"
 wait_idle
 [[ $(state "$m3b") == COMPLETED ]] || fail "merge $m3b: $(cat "$work3/logs/merge-$m3b.log")"
 grep -q "attempt 1, .*resuming its images" "$work3/logs/shard-${a3b}_1.log" ||
