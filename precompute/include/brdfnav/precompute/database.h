@@ -30,8 +30,9 @@ struct PrecomputeRequest {
   bool resume = false;        // reuse the finished units in OUT.partial/
   int threads = 0;            // 0: every hardware thread
   PrecomputeObserver observer;
-  // Render only the images whose unit index (diffuse 0, then every model's nodes in order) is
-  // shard_index modulo shard_count, into OUT as a shard (shard.yaml instead of a manifest).
+  // Render only the units whose index is shard_index modulo shard_count (diffuse 0, then every
+  // model's node units in order, then every model's cell groups, whose midpoints the merge's blend
+  // check measures), into OUT as a shard (shard.yaml instead of a manifest).
   int shard_index = 0, shard_count = 1;
 };
 
@@ -42,8 +43,10 @@ struct PrecomputeRequest {
 void precompute_database(const PrecomputeRequest& request, const EnvMap& env, const Scene& scene);
 
 // Joins the shards of one build (every i of `--shard i/N`, made with the same settings as
-// `request`, which is checked) into request.out, then embeds and fits: the database is
-// byte-identical to an unsharded build. Verifies every shard file's checksum.
+// `request`, which is checked) into request.out, then embeds, fits and runs the blend check from
+// the midpoints the shards rendered (rendering any a shard lacks): the database is byte-identical
+// to an unsharded build. Verifies every shard file's checksum; refuses a shard naming a file
+// outside itself.
 void merge_shards(const std::vector<std::filesystem::path>& shards,
                   const PrecomputeRequest& request, const EnvMap& env, const Scene& scene);
 
