@@ -355,6 +355,11 @@ a2=$(job_of array "$out2") m2=$(job_of merge "$out2")
 work2=$T/run2/work
 kill_mid_work "$a2" 1 "$work2" "${total[1]}"
 before=$(image_stamps "$work2/shard-1.partial")
+# The kill revoked the task's credential on the node, and slurmd refuses any credential of the
+# job issued in the same whole second ("Killing non-startable batch job: Job credential revoked",
+# and the task FAILED). The requeued task can be allocated at once on the CPU the kill freed: it
+# must not be in that second.
+sleep 2
 scontrol requeue "${a2}_1"
 # A requeued job waits 2 minutes before it is eligible again (slurmctld's fixed delay): now.
 scontrol update JobId="${a2}_1" StartTime=now
