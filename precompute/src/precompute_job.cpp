@@ -216,6 +216,40 @@ class Job {
     return false;
   }
 
+  // A unit of work to render: its items (nodes or cells), each one's file and material, how the
+  // unit renders a subset of them together, and how their files store the pixels.
+  struct RenderUnit {
+    const std::vector<std::size_t>& items;
+    std::function<std::string(std::size_t)> file;
+    std::function<Material(std::size_t)> material;
+    std::function<std::vector<Image>(const std::vector<std::size_t>&)> render;
+    ExrPixels pixels;
+  };
+
+  // Renders the unit's items not finished yet (none when the unit is another shard's) and hands
+  // them to `writer`; calls `skipped` for every other item, in order, and returns how many.
+  std::size_t render_unit(const RenderUnit& u, ImageWriter& writer,
+                          const std::function<void()>& skipped) {
+    std::vector<std::size_t> pending;
+    const bool assigned = next_unit_mine();
+    for (std::size_t i : u.items) {
+      if (assigned && !reusable_image(at(u.file(i))))
+        pending.push_back(i);
+      else
+        skipped();
+    }
+    if (pending.empty()) return u.items.size();
+    std::vector<Image> images = u.render(pending);
+    std::vector<PendingFile> files;
+    for (std::size_t k = 0; k < pending.size(); ++k) {
+      const Material m = u.material(pending[k]);
+      files.push_back(
+          {std::move(images[k]), at(u.file(pending[k])), image_metadata(renderer(), &m), u.pixels});
+    }
+    writer.write(std::move(files));
+    return u.items.size() - pending.size();
+  }
+
   void render_images() {
     const std::size_t total = p_.image_count();
     std::size_t done = 0, reused = 0;
@@ -229,27 +263,15 @@ class Job {
     }
     progress("render", ++done, total);
     for (const ProfileGrid& g : p_.grids) {
-      for (const std::vector<std::size_t>& nodes : grid_render_units(g.model, g.grid)) {
-        std::vector<std::size_t> pending;
-        const bool assigned = next_unit_mine();
-        for (std::size_t node : nodes) {
-          if (!assigned || reusable_image(at(db::image_file(g.model, node)))) {
-            ++reused;
-            progress("render", ++done, total);
-          } else {
-            pending.push_back(node);
-          }
-        }
-        if (pending.empty()) continue;
-        std::vector<Image> images = renderer().grid_images(g.model, g.grid, pending);
-        std::vector<PendingFile> files;
-        for (std::size_t k = 0; k < pending.size(); ++k) {
-          const Material m = node_material(g.model, g.grid.node_values(pending[k]));
-          files.push_back({std::move(images[k]), at(db::image_file(g.model, pending[k])),
-                           image_metadata(renderer(), &m)});
-        }
-        writer.write(std::move(files));
-      }
+      for (const std::vector<std::size_t>& nodes : grid_render_units(g.model, g.grid))
+        reused += render_unit(
+            {nodes, [&](std::size_t n) { return db::image_file(g.model, n); },
+             [&](std::size_t n) { return node_material(g.model, g.grid.node_values(n)); },
+             [&](const std::vector<std::size_t>& p) {
+               return renderer().grid_images(g.model, g.grid, p);
+             },
+             ExrPixels::half_raw},
+            writer, [&] { progress("render", ++done, total); });
     }
     writer.finish();
     log("render: " + std::to_string(total) + " images, " + std::to_string(reused) +
@@ -267,26 +289,13 @@ class Job {
     for (const ProfileGrid& g : p_.grids) {
       fs::create_directories(at(cell_image_file(g.model, 0)).parent_path());
       const GridCells cells(g);
-      for (const std::vector<std::size_t>& group : cells.groups) {
-        std::vector<std::size_t> pending;
-        const bool assigned = next_unit_mine();
-        for (std::size_t c : group) {
-          if (!assigned || reusable_image(at(cell_image_file(g.model, c)))) {
-            ++reused;
-            progress("cells", ++done, total);
-          } else {
-            pending.push_back(c);
-          }
-        }
-        if (pending.empty()) continue;
-        std::vector<Image> images = renderer().specular(cells.batch(pending));
-        std::vector<PendingFile> files;
-        for (std::size_t k = 0; k < pending.size(); ++k)
-          files.push_back({std::move(images[k]), at(cell_image_file(g.model, pending[k])),
-                           image_metadata(renderer(), &cells.materials[pending[k]]),
-                           ExrPixels::float_zip});
-        writer.write(std::move(files));
-      }
+      for (const std::vector<std::size_t>& group : cells.groups)
+        reused += render_unit(
+            {group, [&](std::size_t c) { return cell_image_file(g.model, c); },
+             [&](std::size_t c) { return cells.materials[c]; },
+             [&](const std::vector<std::size_t>& p) { return renderer().specular(cells.batch(p)); },
+             ExrPixels::float_zip},
+            writer, [&] { progress("cells", ++done, total); });
     }
     writer.finish();
     log("cells: " + std::to_string(total) + " cell midpoints, " + std::to_string(reused) +
@@ -475,6 +484,7 @@ class Job {
   // Checksums every file, writes the manifest, drops what is not part of the database (the
   // settings, temporaries of an interrupted run) and renames the directory into place.
   void finish() {
+    fs::remove_all(at(kCellsDir));  // the shards' midpoint renders, measured by the blend check
     std::vector<std::string> files = db::database_files(p_.grids);
     for (const std::string& f : db::optional_database_files(p_.grids))
       if (fs::exists(at(f))) files.push_back(f);
@@ -494,7 +504,6 @@ class Job {
         stray.push_back(e.path());
     }
     for (const fs::path& f : stray) fs::remove(f);
-    fs::remove_all(at(kCellsDir));  // the shards' midpoint renders, measured; now empty folders
     std::error_code ec;
     fs::rename(work_, r_.out, ec);
     if (ec)
