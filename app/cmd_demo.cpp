@@ -6,7 +6,7 @@
 
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/core/material.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>

@@ -6,8 +6,9 @@
 
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/io/material_yaml.h>
-#include <brdfnav/precompute/image_output.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/navigator/image_input.h>
+#include <brdfnav/renderer/image_output.h>
+#include <brdfnav/renderer/render.h>
 
 #include <cstdio>
 #include <filesystem>

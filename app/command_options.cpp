@@ -3,7 +3,6 @@
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/core/error.h>
 #include <brdfnav/navigator/navigator.h>
-#include <brdfnav/precompute/scene.h>
 
 #include <filesystem>
 #include <fstream>
@@ -20,10 +19,6 @@ void add_render_setup_options(CLI::App& cmd, RenderSetup& o) {
   cmd.add_option("--scene", o.scene, "'sphere' or a triangle mesh (OBJ)")->capture_default_str();
 }
 
-Scene load_scene(const RenderSetup& o) {
-  return Scene::load(o.scene);
-}
-
 void check_output_file(const std::string& path, const std::string& option) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
@@ -31,10 +26,6 @@ void check_output_file(const std::string& path, const std::string& option) {
   const AtomicOutput probe(path);  // removes its temporary file
   if (!std::ofstream(probe.temp_path()))
     throw Error(ErrorCode::io, option + " " + path, "cannot create a file in its directory");
-}
-
-EnvMap load_env(const RenderSetup& o) {
-  return EnvMap::load(o.env, EnvLoadOptions{o.sanitize_env});
 }
 
 // CLI11's PositiveNumber lets NaN through (NaN <= 0 is false). Checked here as well as by the

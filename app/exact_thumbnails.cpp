@@ -2,7 +2,7 @@
 
 #include <brdfnav/precompute/database.h>
 #include <brdfnav/precompute/profile.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 
 #include <algorithm>
 #include <list>

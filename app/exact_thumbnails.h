@@ -6,9 +6,9 @@
 // where the database's blend check vouches for it.
 #pragma once
 
+#include <brdfnav/core/image.h>
 #include <brdfnav/core/material.h>
 #include <brdfnav/navigator/database.h>
-#include <brdfnav/navigator/image.h>
 #include <brdfnav/navigator/navigator.h>
 
 #include <cstddef>

@@ -1,7 +1,7 @@
 // Progress reporting on stderr, shared by the commands that run long phases.
 #pragma once
 
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 
 #include <string>
 

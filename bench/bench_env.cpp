@@ -1,10 +1,10 @@
 // The renderer's setup on a large environment map: reading nothing from disk, a Renderer over an
-// in-memory map builds the environment pyramid (precompute/src/env_pyramid.h, one thread) and
+// in-memory map builds the environment pyramid (renderer/src/env_pyramid.h, one thread) and
 // traces an 8 x 8 camera, so the time is the pyramid's. For a 1024 x 512 map (Blender's studio
 // lights) and a 4096 x 2048 one (a production HDRI).
 // No target of its own; figures in docs/RENDERER.md, Speed.
 #include <benchmark/benchmark.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 
 #include <cmath>
 

@@ -18,7 +18,7 @@
 #include <brdfnav/navigator/navigator.h>
 #include <brdfnav/navigator/thumbnails.h>
 #include <brdfnav/precompute/database.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 
 #include <cmath>
 #include <cstdio>

@@ -1,8 +1,9 @@
 // Database::open(): verification of a database directory and loading of its tables.
 #include <brdfnav/navigator/database_format.h>
 
+#include <brdfnav/core/image.h>
 #include <brdfnav/core/material.h>
-#include <brdfnav/navigator/image.h>
+#include <brdfnav/navigator/image_input.h>
 
 #include <algorithm>
 #include <cmath>

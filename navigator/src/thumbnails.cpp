@@ -1,6 +1,7 @@
 #include <brdfnav/navigator/thumbnails.h>
 
 #include <brdfnav/core/parallel_for.h>
+#include <brdfnav/navigator/image_input.h>
 
 #include <algorithm>
 #include <vector>

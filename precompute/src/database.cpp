@@ -4,30 +4,7 @@
 
 #include <brdfnav/navigator/database_format.h>
 
-#include <optional>
-
 namespace brdfnav {
-
-namespace {
-
-// The map at `path` with the pixels a build recorded (`pixel_sha1`), loaded as any build loaded
-// it: a --sanitize-env build zeroed NaN/Inf texels, and a map that needed it could not have been
-// built without. `recorder` names the file that records it, for the error.
-EnvMap load_recorded_env(const std::string& path, const std::string& pixel_sha1,
-                         const std::string& recorder) {
-  std::optional<EnvMap> env;
-  try {
-    env = EnvMap::load(path, {.sanitize = true}, [](const std::string&) {});
-  } catch (const EnvMapError& e) {
-    throw DatabaseError(e.what() + (" (the environment map " + recorder + " names)"));
-  }
-  if (env->pixel_hash() != pixel_sha1)
-    throw DatabaseError(path + ": changed since the database was built (pixel sha1 " +
-                        env->pixel_hash() + ", " + recorder + " says " + pixel_sha1 + ")");
-  return std::move(*env);
-}
-
-}  // namespace
 
 EnvMap load_database_env(const Database& db) {
   const Manifest& m = db.manifest();

@@ -2,7 +2,7 @@
 // of work renders (precompute_job.cpp).
 #pragma once
 
-#include <brdfnav/precompute/image_output.h>
+#include <brdfnav/renderer/image_output.h>
 
 #include <filesystem>
 #include <functional>

@@ -7,7 +7,8 @@
 #include <brdfnav/core/parallel_for.h>
 #include <brdfnav/navigator/blend.h>
 #include <brdfnav/navigator/database_format.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/navigator/image_input.h>
+#include <brdfnav/renderer/render.h>
 #include "image_writer.h"
 
 #include <algorithm>

@@ -2,8 +2,8 @@
 
 #include <brdfnav/core/cielab.h>
 #include <brdfnav/core/statistics.h>
-#include <brdfnav/precompute/env_map.h>
 #include <brdfnav/precompute/fit.h>
+#include <brdfnav/renderer/env_map.h>
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // kind of bad input.
 #include "app/cli_runner.h"
 
-#include <brdfnav/precompute/env_map.h>
+#include <brdfnav/renderer/env_map.h>
 
 #include <OpenImageIO/imageio.h>
 

@@ -7,7 +7,7 @@
 #include <brdfnav/navigator/database.h>
 #include <brdfnav/precompute/database.h>
 #include <brdfnav/precompute/profile.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 #include <gtest/gtest.h>
 
 #include <ctime>

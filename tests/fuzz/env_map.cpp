@@ -7,7 +7,7 @@
 // from anything an environment map is. Rejections are EnvMapError.
 #include "fuzz_target.h"
 
-#include <brdfnav/precompute/env_map.h>
+#include <brdfnav/renderer/env_map.h>
 
 #include <OpenImageIO/imageio.h>
 

@@ -10,7 +10,7 @@
 
 #include <brdfnav/core/statistics.h>
 #include <brdfnav/navigator/navigator.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 #include <gtest/gtest.h>
 
 #include <cstdio>

@@ -4,10 +4,11 @@
 #include "navigator/navigator_fixture.h"
 
 #include <brdfnav/navigator/display_thumbnails.h>
+#include <brdfnav/navigator/image_input.h>
 #include <brdfnav/navigator/navigator.h>
 #include <brdfnav/navigator/thumbnails.h>
 #include <brdfnav/ocio/color_pipeline.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 #include <gtest/gtest.h>
 
 #include <cmath>

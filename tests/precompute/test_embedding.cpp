@@ -1,5 +1,5 @@
 #include <brdfnav/precompute/embedding.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>

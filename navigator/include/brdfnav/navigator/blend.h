@@ -4,8 +4,8 @@
 #pragma once
 
 #include <brdfnav/core/grid.h>
+#include <brdfnav/core/image.h>
 #include <brdfnav/core/material.h>
-#include <brdfnav/navigator/image.h>
 
 #include <span>
 

@@ -4,6 +4,7 @@
 // shard.
 #pragma once
 
+#include <brdfnav/core/image.h>
 #include <brdfnav/navigator/database.h>
 
 #include <cstdint>
@@ -26,18 +27,7 @@ inline constexpr const char* kDiffuseFile = "diffuse.exr";
 inline constexpr const char* kBasisFile = "embedding/basis.f32";
 inline constexpr const char* kSingularValuesFile = "embedding/singular_values.f32";
 
-// The string attributes of every image's OpenEXR header: how it was rendered. The builder writes
-// them (render_metadata()); Database::open() checks the environment's hash, the scene and a grid
-// image's material against the manifest.
-inline constexpr const char* kHeaderPrefix = "brdfnav:";           // every key starts with it
-inline constexpr const char* kHeaderEnv = "brdfnav:env";           // the map's path
-inline constexpr const char* kHeaderEnvSha1 = "brdfnav:env_sha1";  // its pixels' SHA-1
-inline constexpr const char* kHeaderScene = "brdfnav:scene";       // the scene's description
-inline constexpr const char* kHeaderResolution = "brdfnav:resolution";
-inline constexpr const char* kHeaderRendererRevision = "brdfnav:renderer_revision";
-inline constexpr const char* kHeaderQuality = "brdfnav:quality";  // the render quality settings
-// The material spec (format_material_spec()); absent from the diffuse image.
-inline constexpr const char* kHeaderMaterial = "brdfnav:material";
+// The keys of the images' headers are db::kHeader* (brdfnav/core/image.h).
 
 std::string image_file(ModelId id, std::size_t node);
 std::string coefficients_file(ModelId id);

@@ -6,9 +6,9 @@
 // every thumbnail after reuses them.
 #pragma once
 
+#include <brdfnav/core/image.h>
 #include <brdfnav/core/material.h>
 #include <brdfnav/navigator/database.h>
-#include <brdfnav/navigator/image.h>
 #include <brdfnav/navigator/thumbnails.h>
 #include <brdfnav/ocio/color_pipeline.h>
 

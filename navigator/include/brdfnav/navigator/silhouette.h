@@ -4,7 +4,7 @@
 // sphere covers.
 #pragma once
 
-#include <brdfnav/navigator/image.h>
+#include <brdfnav/core/image.h>
 
 namespace brdfnav {
 

@@ -7,10 +7,10 @@
 // distances the navigator measures agree.
 #pragma once
 
+#include <brdfnav/core/image.h>
 #include <brdfnav/core/material.h>
 #include <brdfnav/navigator/blend.h>
 #include <brdfnav/navigator/database.h>
-#include <brdfnav/navigator/image.h>
 
 #include <cstddef>
 #include <list>

@@ -5,9 +5,9 @@
 
 #include <brdfnav/navigator/database.h>
 #include <brdfnav/precompute/embedding.h>
-#include <brdfnav/precompute/env_map.h>
 #include <brdfnav/precompute/profile.h>
-#include <brdfnav/precompute/scene.h>
+#include <brdfnav/renderer/env_map.h>
+#include <brdfnav/renderer/scene.h>
 
 #include <filesystem>
 #include <functional>

@@ -2,8 +2,8 @@
 // basis over every model's cube-root images, and each model's coefficients over its grid.
 #pragma once
 
+#include <brdfnav/core/image.h>
 #include <brdfnav/navigator/embedding.h>
-#include <brdfnav/navigator/image.h>
 #include <brdfnav/precompute/pca.h>
 
 #include <vector>

@@ -9,7 +9,7 @@
 #include <brdfnav/navigator/database.h>
 #include <brdfnav/precompute/fit.h>
 #include <brdfnav/precompute/pca.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 
 #include <stdexcept>
 #include <string>

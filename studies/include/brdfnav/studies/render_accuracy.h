@@ -6,7 +6,7 @@
 #pragma once
 
 #include <brdfnav/core/material.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 
 #include <span>
 #include <string>

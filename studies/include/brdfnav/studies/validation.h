@@ -4,10 +4,10 @@
 // resolution) is the caller's choice.
 #pragma once
 
+#include <brdfnav/core/image.h>
 #include <brdfnav/core/material.h>
-#include <brdfnav/navigator/image.h>
 #include <brdfnav/precompute/database.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 
 #include <Eigen/Core>
 

@@ -5,8 +5,8 @@
 #pragma once
 
 #include <brdfnav/precompute/database.h>
-#include <brdfnav/precompute/env_map.h>
-#include <brdfnav/precompute/scene.h>
+#include <brdfnav/renderer/env_map.h>
+#include <brdfnav/renderer/scene.h>
 #include <brdfnav/studies/validation_report.h>
 
 #include <optional>

@@ -1,4 +1,4 @@
-#include <brdfnav/precompute/image_output.h>
+#include <brdfnav/renderer/image_output.h>
 
 #include <brdfnav/core/atomic_file.h>
 

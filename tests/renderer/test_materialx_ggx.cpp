@@ -1,4 +1,4 @@
-// GGX with MaterialX's terms (precompute/src/materialx_ggx.h), which the MaterialX export measures
+// GGX with MaterialX's terms (renderer/src/materialx_ggx.h), which the MaterialX export measures
 // the ggx closure against: spot values written in MaterialX's own GLSL form, and its images.
 // The python one-liners use P of tests/core/test_spot_values.cpp, E the albedo fit below.
 #include "materialx_ggx.h"

@@ -1,4 +1,4 @@
-// The quadrature window's rows (precompute/src/window_rows.h): every node whose cell meets the
+// The quadrature window's rows (renderer/src/window_rows.h): every node whose cell meets the
 // polygon is in a segment, the convex scan agrees on convex polygons, a curved sliver is not
 // filled between its ends, padding (exactly the dilation of the unpadded cells) and rows wider
 // than the grid.

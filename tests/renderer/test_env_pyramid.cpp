@@ -1,5 +1,5 @@
 // The environment pyramid's hot texels merged by the nodes of each level
-// (precompute/src/env_pyramid.h): every hot texel in one group, the power kept, each group's
+// (renderer/src/env_pyramid.h): every hot texel in one group, the power kept, each group's
 // radius around its members, and the level chosen for a node size; the nodes' weights, the
 // corrected midpoint rule summed by parts.
 #include "env_pyramid.h"

@@ -1,7 +1,7 @@
 // resample() gives what OpenImageIO's ImageBufAlgo::resize() gave the thumbnails before it
 // (its default filters: Lanczos-3 when shrinking, Blackman-Harris when enlarging), on an image
 // like a database's: a lit disk on black, alpha its mask.
-#include <brdfnav/navigator/image.h>
+#include <brdfnav/core/image.h>
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imagebufalgo.h>

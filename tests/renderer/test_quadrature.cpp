@@ -1,4 +1,4 @@
-// The quadrature's cached angles (precompute/src/quadrature_scratch.h): what GridAngles and
+// The quadrature's cached angles (renderer/src/quadrature_scratch.h): what GridAngles and
 // outline_angles() return is what std::sin and std::cos give for the same angles, to the bit, so
 // that the images do not depend on what the caches held before.
 #include "quadrature_scratch.h"

@@ -18,7 +18,7 @@
 #include "quadrature_scratch.h"
 #include "window_rows.h"
 
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 
 #include <array>
 #include <type_traits>

@@ -1,7 +1,6 @@
-// The navigator's image reading (OpenEXR alone) and resampling, on files written here with
-// OpenEXR: what it reads, what it refuses with a message naming the file, and resample().
-#include <brdfnav/navigator/database_format.h>
-#include <brdfnav/navigator/image.h>
+// The navigator's image reading (OpenEXR alone), on files written here with OpenEXR: what it
+// reads, and what it refuses with a message naming the file.
+#include <brdfnav/navigator/image_input.h>
 #include <gtest/gtest.h>
 
 #include <ImfChannelList.h>
@@ -195,53 +194,6 @@ TEST(ReadImage, RefusesWhatIsNotRadianceNamingTheFile) {
       write_exr_file("negative.exr", 3, 3, kRgba,
                      [](int x, int y, int c) { return x == 2 && y == 0 && c == 2 ? -1 : 1; }),
       {"pixel (2, 0) has B = -1"});
-}
-
-// A smooth image: low frequencies only, which resampling keeps.
-Image smooth(int w, int h) {
-  Image image(w, h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const double u = (x + 0.5) / w, v = (y + 0.5) / h;
-      float* p = image.pixel(x, y);
-      p[0] = float(1 + 0.5 * std::sin(2 * u + 1) * std::cos(1.5 * v));
-      p[1] = float(2 + u * v);
-      p[2] = float(0.5 + 0.25 * u - 0.1 * v);
-      p[3] = 1;
-    }
-  return image;
-}
-
-TEST(Resample, AConstantStaysTheConstant) {
-  Image constant(40, 40);
-  for (std::size_t i = 0; i < constant.rgba.size(); ++i) constant.rgba[i] = i % 4 == 3 ? 1 : 0.3f;
-  for (auto [w, h] : {std::pair{40, 40}, {128, 128}, {13, 13}, {7, 90}, {1, 1}}) {
-    const Image out = resample(constant, w, h);
-    ASSERT_EQ(out.width, w);
-    ASSERT_EQ(out.height, h);
-    for (std::size_t i = 0; i < out.rgba.size(); ++i)
-      ASSERT_NEAR(out.rgba[i], i % 4 == 3 ? 1 : 0.3f, 1e-6) << w << "x" << h << " at " << i;
-  }
-}
-
-TEST(Resample, UpThenDownStaysClose) {
-  const Image image = smooth(24, 24);
-  for (int up : {48, 61, 128}) {
-    const Image back = resample(resample(image, up, up), 24, 24);
-    double worst = 0;
-    for (std::size_t i = 0; i < image.rgba.size(); ++i)
-      worst = std::max(worst, std::abs(double(back.rgba[i]) - image.rgba[i]));
-    EXPECT_LT(worst, 0.01) << up;
-  }
-  // Down, the image is its smooth self at the coarser sampling.
-  const Image down = resample(smooth(96, 96), 24, 24);
-  for (std::size_t i = 0; i < image.rgba.size(); ++i)
-    EXPECT_NEAR(down.rgba[i], image.rgba[i], 0.01) << i;
-}
-
-TEST(Resample, RefusesEmptySizes) {
-  EXPECT_THROW(resample(smooth(4, 4), 0, 4), ImageError);
-  EXPECT_THROW(resample(Image(), 4, 4), ImageError);
 }
 
 }  // namespace

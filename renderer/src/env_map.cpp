@@ -1,4 +1,4 @@
-#include <brdfnav/precompute/env_map.h>
+#include <brdfnav/renderer/env_map.h>
 
 #include <brdfnav/core/sha1.h>
 
@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 
 namespace brdfnav {
 
@@ -131,6 +132,22 @@ Vec2 EnvMap::texcoord(const Vec3& d) {
   const double phi = std::atan2(-d.x(), d.z());
   const double v = std::acos(std::clamp(d.y() / d.norm(), -1.0, 1.0)) / kPi;
   return {0.5 + phi / (2 * kPi), v};
+}
+
+EnvMap load_recorded_env(const std::string& path, const std::string& pixel_sha1,
+                         const std::string& recorder) {
+  std::optional<EnvMap> env;
+  try {
+    env = EnvMap::load(path, {.sanitize = true}, [](const std::string&) {});
+  } catch (const EnvMapError& e) {
+    throw EnvMapError(e.what() + (" (the environment map " + recorder + " names)"),
+                      ErrorCode::database);
+  }
+  if (env->pixel_hash() != pixel_sha1)
+    throw EnvMapError(path + ": changed since the database was built (pixel sha1 " +
+                          env->pixel_hash() + ", " + recorder + " says " + pixel_sha1 + ")",
+                      ErrorCode::database);
+  return std::move(*env);
 }
 
 }  // namespace brdfnav

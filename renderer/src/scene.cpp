@@ -1,4 +1,4 @@
-#include <brdfnav/precompute/scene.h>
+#include <brdfnav/renderer/scene.h>
 
 #include <embree3/rtcore.h>
 #include <tiny_obj_loader.h>

@@ -1,6 +1,6 @@
 // Environment maps: every bad input a user may hand the pre-renderer gets a clear error naming the
 // file, and the orientation convention of env_map.h holds.
-#include <brdfnav/precompute/env_map.h>
+#include <brdfnav/renderer/env_map.h>
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>

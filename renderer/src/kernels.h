@@ -5,7 +5,7 @@
 #include "vector_exp.h"
 
 #include <brdfnav/core/closure.h>
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 
 #include <array>
 #include <optional>

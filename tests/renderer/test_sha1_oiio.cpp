@@ -2,7 +2,7 @@
 // of a manifest (OIIO::SHA1::digest() of a file's bytes, ImageBufAlgo::computePixelHashSHA1() of
 // an environment map's float RGB pixels): databases written before it still verify.
 #include <brdfnav/core/sha1.h>
-#include <brdfnav/precompute/env_map.h>
+#include <brdfnav/renderer/env_map.h>
 
 #include <OpenImageIO/hash.h>
 #include <OpenImageIO/imagebuf.h>

@@ -9,7 +9,7 @@
 // Orientation is EnvMap's (env_map.h): u across the columns, v = theta / pi down the rows.
 #pragma once
 
-#include <brdfnav/precompute/env_map.h>
+#include <brdfnav/renderer/env_map.h>
 
 #include <array>
 #include <cmath>

@@ -10,10 +10,10 @@
 #pragma once
 
 #include <brdfnav/core/grid.h>
+#include <brdfnav/core/image.h>
 #include <brdfnav/core/material.h>
-#include <brdfnav/navigator/image.h>
-#include <brdfnav/precompute/env_map.h>
-#include <brdfnav/precompute/scene.h>
+#include <brdfnav/renderer/env_map.h>
+#include <brdfnav/renderer/scene.h>
 
 #include <cstdint>
 #include <functional>
@@ -84,7 +84,7 @@ class Renderer {
   std::vector<Image> specular(std::span<const Lobe> lobes);
   // Ward lobes with rho_s = 1 at every pair of alpha_x[i] and alpha_y[j], as
   // images[i * alpha_y.size() + j], integrated together over one set of nodes per pixel, fine
-  // enough for each lobe where it reaches (precompute/src/ward_grid.h): over the paper's 15 x 15
+  // enough for each lobe where it reaches (renderer/src/ward_grid.h): over the paper's 15 x 15
   // grid, a small part of the time of specular() of each. The nodes depend on the smallest and
   // largest alpha of each list, so an image differs from specular()'s, and from the same lobe's
   // in another grid, within the accuracy target. std::invalid_argument for an empty list, an
@@ -98,7 +98,7 @@ class Renderer {
                                  std::span<const std::size_t> nodes);
   // rho_d * diffuse() + rho_s * specular(lobe); validates the material (MaterialError).
   Image render(const Material& material);
-  // A GGX lobe with MaterialX's terms instead of Cycles' (precompute/src/materialx_ggx.h),
+  // A GGX lobe with MaterialX's terms instead of Cycles' (renderer/src/materialx_ggx.h),
   // integrated in the lobe's own windows: the part of a MaterialX renderer's image that rho_s
   // scales (`compensation` false) or that rho_s^2 scales (true). docs/HOSTS.md, MaterialX.
   Image materialx_ggx(const Ggx& lobe, bool compensation);

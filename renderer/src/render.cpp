@@ -1,7 +1,6 @@
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 
 #include <brdfnav/core/parallel_for.h>
-#include <brdfnav/navigator/database_format.h>
 #include "geometry.h"
 #include "materialx_ggx.h"
 #include "quadrature.h"

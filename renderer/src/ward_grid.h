@@ -27,7 +27,7 @@
 
 #include "env_pyramid.h"
 
-#include <brdfnav/precompute/render.h>
+#include <brdfnav/renderer/render.h>
 
 #include <array>
 #include <functional>

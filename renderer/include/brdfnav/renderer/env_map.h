@@ -80,6 +80,14 @@ class EnvMap {
   std::string source_, hash_;
 };
 
+// The map at `path` whose texels a build recorded (`pixel_sha1`), loaded as every build loaded
+// it: NaN/Inf texels set to 0, as a --sanitize-env build did (a map that needed it could not have
+// been built without). `recorder` names the file that records the map (a database's manifest, a
+// shard's shard.yaml), for the error. Throws EnvMapError with ErrorCode::database naming the map
+// and `recorder` when the file can no longer be read or its texels have changed since.
+EnvMap load_recorded_env(const std::string& path, const std::string& pixel_sha1,
+                         const std::string& recorder);
+
 // The map's Rec. 709 luminance over the sphere of directions: each texel's times its exact solid
 // angle, summed (over 4 pi, the map's mean luminance). The renderer's hot texels are those
 // brighter than a multiple of that mean (env_pyramid.cpp, which defines it with the texels' solid

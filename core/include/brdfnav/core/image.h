@@ -1,4 +1,4 @@
-// BRDF images in memory and on disk, and the paper's metric between them (section 2.1):
+// BRDF images in memory and the paper's metric between them (section 2.1):
 //   d(A, B) = sqrt(mean over covered pixels and the 3 channels of (cbrt(A) - cbrt(B))^2).
 // The RMS form makes a radius mean the same at any resolution; it is brdfnav's unit of distance.
 #pragma once
@@ -6,7 +6,6 @@
 #include <brdfnav/core/error.h>
 #include <brdfnav/core/math.h>
 
-#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -45,27 +44,23 @@ double image_distance(const Image& a, const Image& b);
 // Metadata written as string attributes of the EXR header (e.g. {db::kHeaderMaterial, spec}).
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 
-// What an OpenEXR file's header says: its data window's size and its brdfnav string attributes.
-struct ImageHeader {
-  int width = 0, height = 0;
-  ImageMetadata metadata;  // the string attributes whose names start with "brdfnav:"
-  // The attribute's value, or "" when the header has none.
-  std::string attribute(const std::string& name) const;
-};
-
-// The database's images are OpenEXR, read here with OpenEXR alone (no OpenImageIO: the navigator's
-// library must not bring its image libraries into a host; docs/HOSTS.md). The builder writes them
-// (brdfnav/precompute/image_output.h).
-//
-// Reads the header of an OpenEXR file. Throws ImageError naming the file when it is missing, not
-// an OpenEXR file, or unreadable.
-ImageHeader read_image_header(const std::filesystem::path& path);
-// Reads an OpenEXR image's R, G, B and A channels as linear float RGBA (without A, alpha is 1).
-// Throws ImageError naming the file when it cannot, when it is not OpenEXR or its colour channels
-// hold integers (not radiance), or naming the pixel when one is negative or not finite.
-Image read_image(const std::filesystem::path& path);
-// The string attributes of an OpenEXR file's header that start with "brdfnav:".
-ImageMetadata read_image_metadata(const std::filesystem::path& path);
+// Files hold BRDF images as OpenEXR: the renderer writes them (brdfnav/renderer/image_output.h),
+// the navigator reads them with OpenEXR alone (brdfnav/navigator/image_input.h).
+namespace db {
+// The string attributes of every BRDF image's OpenEXR header: how it was rendered. The renderer
+// writes them (render_metadata()); Database::open() checks the environment's hash, the scene and
+// a grid image's material against the manifest. Part of a database's layout (database_format.h),
+// defined here because the renderer and the navigator both need them and neither uses the other.
+inline constexpr const char* kHeaderPrefix = "brdfnav:";           // every key starts with it
+inline constexpr const char* kHeaderEnv = "brdfnav:env";           // the map's path
+inline constexpr const char* kHeaderEnvSha1 = "brdfnav:env_sha1";  // its pixels' SHA-1
+inline constexpr const char* kHeaderScene = "brdfnav:scene";       // the scene's description
+inline constexpr const char* kHeaderResolution = "brdfnav:resolution";
+inline constexpr const char* kHeaderRendererRevision = "brdfnav:renderer_revision";
+inline constexpr const char* kHeaderQuality = "brdfnav:quality";  // the render quality settings
+// The material spec (format_material_spec()); absent from the diffuse image.
+inline constexpr const char* kHeaderMaterial = "brdfnav:material";
+}  // namespace db
 
 // `image` resampled to `width` x `height`, every channel alike, each axis by a separable filter:
 // when shrinking, Lanczos-3 with its support widened by the ratio (so every source pixel

@@ -1,9 +1,9 @@
 // Writing BRDF images: the builder's database images and `brdfnav render`'s output, through
-// OpenImageIO. The navigator reads them back with OpenEXR alone (brdfnav/navigator/image.h);
+// OpenImageIO. The navigator reads them back with OpenEXR alone (brdfnav/core/image.h);
 // their header's keys are database_format.h's.
 #pragma once
 
-#include <brdfnav/navigator/image.h>
+#include <brdfnav/core/image.h>
 
 #include <filesystem>
 

@@ -1,4 +1,4 @@
-// Ward's grid rendered in one pass (Renderer::ward_grid, precompute/src/ward_grid.h): the
+// Ward's grid rendered in one pass (Renderer::ward_grid, renderer/src/ward_grid.h): the
 // accuracy of its images, their order, determinism, their dependence on the grid through its
 // alpha ranges alone, self-shadowing on a mesh, and bad grids.
 #include "render_fixtures.h"

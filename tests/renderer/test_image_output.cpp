@@ -1,6 +1,7 @@
 // write_exr(): what `brdfnav render` writes (every bit of the float) and what a database stores
 // (uncompressed halves), read back by the navigator's own reader.
-#include <brdfnav/precompute/image_output.h>
+#include <brdfnav/navigator/image_input.h>
+#include <brdfnav/renderer/image_output.h>
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
