@@ -14,7 +14,7 @@ namespace {
 
 // The SHA-1 of the float RGB texels' bytes, row 0 first: what OpenImageIO's
 // ImageBufAlgo::computePixelHashSHA1() gave for them, which older manifests record
-// (tests/precompute/test_sha1_oiio.cpp).
+// (tests/renderer/test_sha1_oiio.cpp).
 std::string pixel_sha1(const std::vector<float>& rgb) {
   Sha1 sha;
   sha.append(rgb.data(), rgb.size() * sizeof(float));
