@@ -2,6 +2,7 @@
 
 #include <brdfnav/navigator/navigation_json.h>
 #include <brdfnav/navigator/navigation_yaml.h>
+#include <brdfnav/precompute/database.h>
 #include <brdfnav/renderer/render.h>
 
 #include <algorithm>
@@ -157,11 +158,7 @@ RendererExport make_renderer_export(const Navigator& navigator, const Material& 
   e.scene = manifest.scene;
   // A ggx material for Cycles, whose GGX it is: nothing to measure.
   if (chosen.model == ModelId::ggx && format != ExportFormat::materialx) return e;
-  const EnvMap env = EnvMap::load(manifest.env_path, {}, [](const std::string&) {});
-  if (env.pixel_hash() != manifest.env_hash)
-    throw DatabaseError(manifest.env_path +
-                        ": not the environment map the database was built with (its pixels' "
-                        "SHA-1 differs from the manifest's)");
+  const EnvMap env = load_database_env(db);
   const Scene scene = Scene::load(manifest.scene);
   Renderer renderer(env, scene, e.resolution);
   const Image ggx = renderer.render(e.ggx);

@@ -174,6 +174,33 @@ TEST_F(BadInputs, ShardsOfASanitizedMapMerge) {
   EXPECT_NE(r.err.find("shard.yaml"), std::string::npos) << r.err;
 }
 
+// Every reader of a database loads its map as the build did: a database built with --sanitize-env
+// from a map with NaN texels exports in every format (MaterialX and Cycles render the equivalent
+// to state its residual; they once reloaded the map without sanitizing and exited 4), and once
+// the map has changed, an export that renders is refused naming the map and the manifest.
+TEST_F(BadInputs, ADatabaseOfASanitizedMapExportsInEveryFormat) {
+  const fs::path nan =
+      write_map("nan_export.exr", 16, 8, 3, 1.f, std::numeric_limits<float>::quiet_NaN());
+  const fs::path db = out_dir("sanitized_export") / "db";
+  CliResult r = run_cli("precompute --profile smoke --res 8 --sanitize-env --env " + nan.string() +
+                        " --out " + db.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string exports = "export --db " + db.string() + " --material ward --out ";
+  for (const std::string format : {"yaml", "materialx", "cycles"}) {
+    const fs::path out = out_dir("sanitized_export") / ("ward." + format);
+    r = run_cli(exports + out.string() + " --format " + format);
+    EXPECT_EQ(r.exit_code, 0) << format << ": " << r.err;
+    EXPECT_TRUE(fs::is_regular_file(out)) << format;
+  }
+  write_map("nan_export.exr", 16, 8, 3, 2.f, std::numeric_limits<float>::quiet_NaN());
+  r = run_cli(exports + (out_dir("sanitized_export") / "changed.mtlx").string() +
+              " --format materialx");
+  EXPECT_EQ(r.exit_code, 5) << r.err;
+  EXPECT_NE(r.err.find(nan.string() + ": changed since the database was built"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find((db / "manifest.yaml").string()), std::string::npos) << r.err;
+}
+
 TEST_F(BadInputs, DamagedDatabases) {
   const std::string manifest = "manifest.yaml";
   struct Case {
