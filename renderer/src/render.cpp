@@ -77,11 +77,11 @@ struct Renderer::Impl {
 
   Impl(const EnvMap& e, const Scene& s, int res, RenderOptions o)
       : env(e), scene(s), resolution(res), options(std::move(o)), pyramid(e) {
-    if (res < 1) throw std::invalid_argument("resolution must be at least 1");
+    if (res < 1) throw RenderError("resolution must be at least 1");
     const RenderQuality& q = options.quality;
     if (!(q.texels_per_width > 0) || !(q.hot_texels_per_width > 0) || !(q.max_node > 0) ||
         !(q.reach > 0) || q.max_split < 1 || q.max_nodes < 1)
-      throw std::invalid_argument("render quality: every knob must be positive");
+      throw RenderError("render quality: every knob must be positive");
     surface = scene.trace_camera(res);
     mirror_width = mirror_widths(surface, kPi / env.height());
   }
@@ -197,7 +197,7 @@ struct Renderer::Impl {
         lobe, p, s,
         [&](const Frame& frame, const Vec3& wo, const std::optional<SlopeWeight>& part) {
           // Lobes rendered in parts have no Fresnel parameter (shares_quadrature()).
-          if (part) throw std::logic_error("a batch of lobes rendered in parts");
+          if (part) throw Error(ErrorCode::internal, "a batch of lobes rendered in parts");
           return FresnelBatchKernel<L>(lobe, params, frame, wo);
         },
         [&](BatchValue& sum, const Vec3& wo) {
@@ -351,7 +351,8 @@ std::vector<Image> Renderer::specular(std::span<const Lobe> lobes) {
               params.push_back(std::get<L>(lobes[j]).*kFresnelParameter<L>);
             return impl_->batch_images(first, params);
           } else {
-            throw std::logic_error("shares_quadrature() grouped lobes without a Fresnel parameter");
+            throw Error(ErrorCode::internal,
+                        "shares_quadrature() grouped lobes without a Fresnel parameter");
           }
         },
         lobes[group[0]]);

@@ -49,12 +49,12 @@ WardGridQuadrature::WardGridQuadrature(const EnvPyramid& env, std::span<const do
       alpha_y_(alpha_y.begin(), alpha_y.end()) {
   for (auto [alphas, inverse] :
        {std::pair{&alpha_x_, &inv_alpha2_x_}, {&alpha_y_, &inv_alpha2_y_}}) {
-    if (alphas->empty()) throw std::invalid_argument("Ward grid: an alpha axis is empty");
+    if (alphas->empty()) throw RenderError("Ward grid: an alpha axis is empty");
     for (double a : *alphas)
       if (!(a > 0) || !std::isfinite(a))
-        throw std::invalid_argument("Ward grid: alpha must be positive and finite");
+        throw RenderError("Ward grid: alpha must be positive and finite");
     if (!std::is_sorted(alphas->begin(), alphas->end()))
-      throw std::invalid_argument("Ward grid: the alphas must not decrease");
+      throw RenderError("Ward grid: the alphas must not decrease");
     inverse->assign(std::size_t(ward_grid::padded(int(alphas->size()))), 0.f);
     for (std::size_t i = 0; i < alphas->size(); ++i)
       (*inverse)[i] = static_cast<float>(1 / ((*alphas)[i] * (*alphas)[i]));

@@ -41,6 +41,25 @@ TEST(Render, WhiteFurnaceLambertianSphereIsRhoD) {
 // about 1 for rho_s = 1 (Blinn-Phong's normalisation is approximate, so a little above 1 is
 // allowed). Lafortune's lobes off the Phong setting can be very dark (its normalisation uses
 // max(|cxy|, |cz|)^n), so only positivity is asked of the lower end.
+// What cannot be rendered is the caller's mistake, said as such (ErrorCode::invalid_argument: the
+// CLI's exit code 2, the C ABI's invalid-argument status), not an internal failure.
+TEST(Render, RefusesWhatCannotBeRenderedAsTheCallersMistake) {
+  const EnvMap env = constant_env(1.f);
+  const Scene sphere = Scene::sphere();
+  for (int res : {0, -4}) {
+    try {
+      Renderer(env, sphere, res);
+      ADD_FAILURE() << "rendered at " << res;
+    } catch (const RenderError& e) {
+      EXPECT_EQ(e.code(), ErrorCode::invalid_argument);
+      EXPECT_NE(std::string(e.what()).find("resolution"), std::string::npos) << e.what();
+    }
+  }
+  RenderOptions options;
+  options.quality.reach = 0;
+  EXPECT_THROW(Renderer(env, sphere, 8, options), RenderError);
+}
+
 TEST(Render, FurnaceLobesAreBoundedAndPositive) {
   const EnvMap env = constant_env(1.f);
   const Scene sphere = Scene::sphere();

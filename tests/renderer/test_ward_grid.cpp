@@ -135,8 +135,8 @@ TEST(WardGrid, RejectsBadAlphas) {
   const double inf = std::numeric_limits<double>::infinity();
   for (const std::vector<double>& bad : std::vector<std::vector<double>>{
            {}, {0.0, 0.1}, {-0.1, 0.1}, {0.01, nan}, {0.01, inf}, {0.1, 0.01}}) {
-    EXPECT_THROW(renderer.ward_grid(bad, good), std::invalid_argument);
-    EXPECT_THROW(renderer.ward_grid(good, bad), std::invalid_argument);
+    EXPECT_THROW(renderer.ward_grid(bad, good), RenderError);
+    EXPECT_THROW(renderer.ward_grid(good, bad), RenderError);
   }
 }
 

@@ -9,6 +9,7 @@
 // for the same inputs whatever the thread count.
 #pragma once
 
+#include <brdfnav/core/error.h>
 #include <brdfnav/core/grid.h>
 #include <brdfnav/core/image.h>
 #include <brdfnav/core/material.h>
@@ -22,6 +23,10 @@
 #include <vector>
 
 namespace brdfnav {
+
+// A render asked for with arguments that cannot be rendered: a resolution below 1, a quality knob
+// that is not positive, a Ward grid's alphas that are empty, not positive or decreasing.
+using RenderError = LayerError<struct RenderErrorTag, ErrorCode::invalid_argument>;
 
 // Bumped whenever the renderer's images change beyond rounding (a new quadrature rule, a lobe's
 // formula). A database's settings record it, so that a resumed build or a merge of shards never
@@ -59,7 +64,8 @@ struct RenderOptions {
 class Renderer {
  public:
   // Keeps references to `env` and `scene`: both must outlive the renderer. Traces the camera and
-  // builds the environment's quadtree once.
+  // builds the environment's quadtree once. RenderError for a resolution below 1 or a quality
+  // knob that is not positive.
   Renderer(const EnvMap& env, const Scene& scene, int resolution, RenderOptions options = {});
   ~Renderer();
   Renderer(const Renderer&) = delete;
@@ -87,8 +93,8 @@ class Renderer {
   // enough for each lobe where it reaches (renderer/src/ward_grid.h): over the paper's 15 x 15
   // grid, a small part of the time of specular() of each. The nodes depend on the smallest and
   // largest alpha of each list, so an image differs from specular()'s, and from the same lobe's
-  // in another grid, within the accuracy target. std::invalid_argument for an empty list, an
-  // alpha that is not positive and finite, or a list that decreases.
+  // in another grid, within the accuracy target. RenderError for an empty list, an alpha that
+  // is not positive and finite, or a list that decreases.
   std::vector<Image> ward_grid(std::span<const double> alpha_x, std::span<const double> alpha_y);
   // The images (rho_s = 1) of `nodes` of a grid of `model`'s lobes, in order: the nodes of one
   // unit of grid_render_units(model, grid), or several. How they are rendered is the renderer's
