@@ -2,10 +2,10 @@
 // `brdfnav variations`: the same as a labelled contact sheet through OCIO;
 // `brdfnav export`: a chosen material with its provenance and its equivalents in the other
 // models. All read a database made by `brdfnav precompute` (docs/NAVIGATION.md).
+#include <brdfnav/lookdev/exact_thumbnails.h>
+#include <brdfnav/lookdev/export_formats.h>
 #include "command_options.h"
 #include "commands.h"
-#include "exact_thumbnails.h"
-#include "export_formats.h"
 
 #include <brdfnav/core/atomic_file.h>
 
@@ -87,7 +87,7 @@ void add_neighbors_command(CLI::App& app) {
   cmd->callback([=] {
     const Navigator navigator = open_navigator(*in);
     const Material current = load_current(*in);
-    std::optional<ExactThumbnails> renders;
+    std::optional<lookdev::ExactThumbnails> renders;
     std::optional<ExactSteps> steps;
     if (*exact) {
       renders.emplace(navigator.database(), navigator.database().manifest().resolution);
@@ -185,15 +185,16 @@ void add_export_command(CLI::App& app) {
                   "yaml (brdfnav's), materialx (a MaterialX 1.38 document) or cycles (what "
                   "hosts/blender/brdfnav_cycles.py reads)")
       ->capture_default_str()
-      ->check(CLI::IsMember(export_format_names()));
+      ->check(CLI::IsMember(lookdev::export_format_names()));
   cmd->add_option("--res", *resolution,
                   "materialx, cycles: the resolution at which the residuals are rendered "
                   "(default: the database's)")
       ->check(CLI::Range(8, 4096));
   cmd->callback([=] {
     const Navigator navigator = open_navigator(*in);
-    write_file_atomic(*out, export_document(navigator, load_current(*in),
-                                            parse_export_format(*format), *resolution));
+    write_file_atomic(*out,
+                      lookdev::export_document(navigator, load_current(*in),
+                                               lookdev::parse_export_format(*format), *resolution));
   });
 }
 

@@ -1,8 +1,8 @@
 // `brdfnav precompute`: builds the navigation database (docs/DATABASE.md); `brdfnav db-info`:
 // verifies one and prints what it holds.
+#include <brdfnav/lookdev/final_images.h>
 #include "command_options.h"
 #include "commands.h"
-#include "final_images.h"
 #include "progress.h"
 
 #include <brdfnav/core/statistics.h>
@@ -54,8 +54,9 @@ void print_info(const Database& db) {
                   why.c_str());
       continue;
     }
-    const auto vouched = std::count_if(checks.begin(), checks.end(),
-                                       [](float d) { return d <= FinalImages::kFaithfulBlend; });
+    const auto vouched = std::count_if(checks.begin(), checks.end(), [](float d) {
+      return d <= lookdev::FinalImages::kFaithfulBlend;
+    });
     std::vector<double> values(checks.begin(), checks.end());
     std::printf("blend check %s: %td of %zu cells vouched for (median %.4f, worst %.4f)\n",
                 name.c_str(), vouched, checks.size(), quantile(values, 0.5), quantile(values, 1.0));

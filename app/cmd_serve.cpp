@@ -1,10 +1,10 @@
 // `brdfnav serve`: the navigation interface of the paper (sections 3.3 and 4) as a page in the
 // browser, over the JSON API of serve_api.h (docs/SERVE.md). The page is embedded in the binary;
 // nothing is fetched from anywhere else.
+#include <brdfnav/serve/serve_api.h>
+#include <brdfnav/serve/serve_memory.h>
+#include <brdfnav/serve/web_assets.h>
 #include "commands.h"
-#include "serve_api.h"
-#include "serve_memory.h"
-#include "web_assets.h"
 
 #include <ImfThreading.h>
 #include <OpenImageIO/imageio.h>
@@ -44,7 +44,7 @@ struct ServeOptions {
 // Every answer goes out through here; a failure is logged with its message as the API wrote it
 // (httplib compresses the body after the handler for a client that accepts gzip or br, so the
 // logger would see compressed bytes).
-void reply(const httplib::Request& req, httplib::Response& res, const ApiResponse& answer) {
+void reply(const httplib::Request& req, httplib::Response& res, const serve::ApiResponse& answer) {
   if (answer.status >= 400)
     std::fprintf(stderr, "brdfnav: serve: %s %s -> %d %s\n", req.method.c_str(), req.path.c_str(),
                  answer.status, answer.body.c_str());
@@ -53,16 +53,16 @@ void reply(const httplib::Request& req, httplib::Response& res, const ApiRespons
   for (const auto& [name, value] : answer.headers) res.set_header(name.c_str(), value);
 }
 
-const WebAsset* find_asset(const std::string& path) {
+const serve::WebAsset* find_asset(const std::string& path) {
   const std::string wanted = path == "/" ? "/index.html" : path;
-  for (const WebAsset& asset : web_assets())
+  for (const serve::WebAsset& asset : serve::web_assets())
     if (asset.path == wanted) return &asset;
   return nullptr;
 }
 
-void add_routes(httplib::Server& server, const NavigatorApi& api, IdleRelease& idle) {
+void add_routes(httplib::Server& server, const serve::NavigatorApi& api, serve::IdleRelease& idle) {
   const auto handle = [&api, &idle](const httplib::Request& req, httplib::Response& res) {
-    const IdleRelease::Busy busy(idle);
+    const serve::IdleRelease::Busy busy(idle);
     reply(req, res, api.handle({req.method, req.path, req.params, req.body}));
   };
   // Every POST and every request under /api/ is the API's (which refuses the methods a path
@@ -72,7 +72,7 @@ void add_routes(httplib::Server& server, const NavigatorApi& api, IdleRelease& i
   server.Put("/api/.*", handle).Patch("/api/.*", handle).Delete("/api/.*", handle);
   server.Options("/api/.*", handle);
   server.Get("/.*", [](const httplib::Request& req, httplib::Response& res) {
-    if (const WebAsset* asset = find_asset(req.path)) {
+    if (const serve::WebAsset* asset = find_asset(req.path)) {
       res.set_content(std::string(asset->body), std::string(asset->content_type).c_str());
     } else {
       res.status = 404;
@@ -91,19 +91,20 @@ std::string refusal(const httplib::Request& req, int status) {
   if (req.get_header_value("Content-Type").rfind("application/x-www-form-urlencoded", 0) == 0)
     return "body: larger than 8192 bytes, httplib's limit for application/x-www-form-urlencoded "
            "(send the request as application/json)";
-  return "body: larger than " + std::to_string(kMaxBodyBytes) + " bytes";
+  return "body: larger than " + std::to_string(serve::kMaxBodyBytes) + " bytes";
 }
 
 // Every failure answers in the API's form: {"error": ...} with 400 for the client's mistakes.
 void add_error_handling(httplib::Server& server) {
-  server.set_payload_max_length(kDrainedBodyBytes);
+  server.set_payload_max_length(serve::kDrainedBodyBytes);
   using Handled = httplib::Server::HandlerResponse;
   server.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request& req,
                                                                    httplib::Response& res) {
     if (!res.body.empty()) return Handled::Unhandled;  // an API answer
     // httplib refuses a body over the limit with 413; the API reports every bad request as
     // 400 naming the field.
-    reply(req, res, error_response(res.status == 413 ? 400 : res.status, refusal(req, res.status)));
+    reply(req, res,
+          serve::error_response(res.status == 413 ? 400 : res.status, refusal(req, res.status)));
     return Handled::Handled;
   }));
   server.set_exception_handler(
@@ -111,9 +112,9 @@ void add_error_handling(httplib::Server& server) {
         try {
           std::rethrow_exception(error);
         } catch (const std::exception& e) {
-          reply(req, res, error_response(500, e.what()));
+          reply(req, res, serve::error_response(500, e.what()));
         } catch (...) {
-          reply(req, res, error_response(500, "unknown error"));
+          reply(req, res, serve::error_response(500, "unknown error"));
         }
       });
   // The page loads nothing but its own files and the thumbnails it fetches.
@@ -218,7 +219,7 @@ void serve(const ServeOptions& o) {
   Imf::setGlobalThreadCount(0);
   // One heap per core for the 64 request threads: under 8 pages at once this kept the server
   // at 411 MiB instead of 622 (docs/NAVIGATION.md), its final p95 within the run-to-run spread.
-  limit_heap_arenas(std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
+  serve::limit_heap_arenas(std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
 
   // The port first: opening a database verifies every file's checksum (seconds for the default
   // one), and a port in use should not wait for that. Connections made meanwhile wait in the
@@ -227,11 +228,11 @@ void serve(const ServeOptions& o) {
   add_error_handling(server);
   size_for_bursts(server);
   const int port = bind(server, o);
-  std::unique_ptr<const NavigatorApi> api;
+  std::unique_ptr<const serve::NavigatorApi> api;
   with_context("--db", [&] {
-    api = std::make_unique<const NavigatorApi>(ApiOptions{o.db, o.resolution});
+    api = std::make_unique<const serve::NavigatorApi>(serve::ApiOptions{o.db, o.resolution});
   });
-  IdleRelease idle(kIdleRelease, [&api] { api->release_memory(); });
+  serve::IdleRelease idle(kIdleRelease, [&api] { api->release_memory(); });
   add_routes(server, *api, idle);
   warn_of_rendered_finals(api->navigator().database(), o.resolution);
   if (o.host != "127.0.0.1" && o.host != "localhost" && o.host != "::1")

@@ -1,6 +1,7 @@
 // `brdfnav bench fidelity`: renders what the navigator offers exactly, with the database's own
 // renderer settings (map, scene, resolution, quality), and compares
-// - each final image the server would show (the centre and every offer: FinalImages, the blend
+// - each final image the server would show (the centre and every offer: lookdev::FinalImages, the
+// blend
 //   where the database's blend check vouches for it, else the render) with the exact render of
 //   its material: the targets are 0.05 eps (median) and 0.25 eps (worst); and the previews (every
 //   image a blend) alike, for comparison;
@@ -9,10 +10,10 @@
 //   at a colour limit or beyond the radius do not aim at eps and are counted apart.
 #include "bench_fidelity.h"
 
+#include <brdfnav/lookdev/exact_thumbnails.h>
+#include <brdfnav/lookdev/final_images.h>
 #include "bench_figures.h"
 #include "bench_navigator.h"
-#include "exact_thumbnails.h"
-#include "final_images.h"
 
 #include <brdfnav/core/statistics.h>
 #include <brdfnav/navigator/navigator.h>
@@ -62,9 +63,9 @@ void run_fidelity_bench(const FidelityBenchOptions& o) {
   const Manifest& manifest = db.manifest();
   // Exact renders with the database's map, scene, resolution and quality: what the server's
   // exact thumbnails and steps render.
-  const ExactThumbnails renders(db, manifest.resolution);
+  const lookdev::ExactThumbnails renders(db, manifest.resolution);
   const Thumbnails thumbnails(db, manifest.resolution);
-  const FinalImages finals(thumbnails, renders);
+  const lookdev::FinalImages finals(thumbnails, renders);
   const Tab tabs[] = {Tab::lobe, Tab::diffuse, Tab::specular, Tab::models};
 
   // Per model, in eps: the previews' and the final images' distances from the exact renders.

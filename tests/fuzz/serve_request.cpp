@@ -8,7 +8,7 @@
 // that reads back as a material.
 #include "fuzz_target.h"
 
-#include "serve_api.h"
+#include <brdfnav/serve/serve_api.h>
 
 #include <brdfnav/io/material_yaml.h>
 
@@ -19,9 +19,9 @@
 namespace brdfnav::fuzz {
 namespace {
 
-const cli::NavigatorApi& api() {
+const serve::NavigatorApi& api() {
   // The smallest thumbnails the server allows: the fuzzer is after the parsing, not the images.
-  static const cli::NavigatorApi instance(cli::ApiOptions{BRDFNAV_FUZZ_DATABASE, 8});
+  static const serve::NavigatorApi instance(serve::ApiOptions{BRDFNAV_FUZZ_DATABASE, 8});
   return instance;
 }
 
@@ -36,14 +36,14 @@ std::multimap<std::string, std::string> parse_query(std::string_view text) {
   return query;
 }
 
-void check_json(const cli::ApiResponse& answer) {
+void check_json(const serve::ApiResponse& answer) {
   if (!nlohmann::json::accept(answer.body)) fail("answer is not JSON: " + answer.body);
   const nlohmann::json body = nlohmann::json::parse(answer.body);
   if (answer.status != 200 && !(body.contains("error") && body["error"].is_string()))
     fail("error answer without an error message: " + answer.body);
 }
 
-void check(const cli::ApiResponse& answer) {
+void check(const serve::ApiResponse& answer) {
   if (answer.status != 200 && answer.status != 400 && answer.status != 404 && answer.status != 405)
     fail("status " + std::to_string(answer.status) + ": " + answer.body);
   if ((answer.status == 405) != (answer.headers.size() == 1 && answer.headers[0].first == "Allow"))

@@ -273,7 +273,7 @@ TEST(Navigator, ColorsAtTheEdgeOfTheirRangeAreClamped) {
   }
 }
 
-// The page starts from start_material() at radius 0.03 (app/serve_api.cpp), and the README's
+// The page starts from start_material() at radius 0.03 (serve/src/serve_api.cpp), and the README's
 // example asks for this Ward material at 0.03: every lobe and colour direction has room to move.
 TEST(Navigator, TheStartAndTheReadmesMaterialHaveRoomInEveryDirection) {
   const Navigator& nav = navigator();

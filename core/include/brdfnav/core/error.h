@@ -1,7 +1,7 @@
 // brdfnav's one error type. Every layer throws an Error: its message names what is at fault (the
 // file, line, key or argument) and its code says what kind of failure it is. Each edge maps the
 // code once, whatever layer threw: the C ABI onto brdfnav_status (plugin/src/c_abi.cpp), the CLI
-// onto its exit codes (app/main.cpp), the HTTP API onto status codes (app/serve_api.cpp).
+// onto its exit codes (app/main.cpp), the HTTP API onto status codes (serve/src/serve_api.cpp).
 //
 // The layers' own names (MaterialError, DatabaseError, ...) are Errors with a default code, so a
 // caller can still catch one layer's failures alone; none is translated into another to change

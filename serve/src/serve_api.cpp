@@ -1,7 +1,7 @@
-#include "serve_api.h"
+#include <brdfnav/serve/serve_api.h>
 
-#include "export_formats.h"
-#include "serve_memory.h"
+#include <brdfnav/lookdev/export_formats.h>
+#include <brdfnav/serve/serve_memory.h>
 
 #include <brdfnav/io/material_yaml.h>
 #include <brdfnav/navigator/display_thumbnails.h>
@@ -23,7 +23,7 @@
 #include <utility>
 #include <vector>
 
-namespace brdfnav::cli {
+namespace brdfnav::serve {
 
 namespace {
 
@@ -447,10 +447,10 @@ ApiResponse NavigatorApi::export_material(std::string_view body) const {
   return answer([&] {
     const json request = parse_body(body, {"material", "format"});
     const Material m = read_material(navigator_.database(), require(request, "material"));
-    ExportFormat format = ExportFormat::yaml;
+    lookdev::ExportFormat format = lookdev::ExportFormat::yaml;
     if (const std::optional<std::string> name = optional_string(request, "format")) {
       try {
-        format = parse_export_format(*name);
+        format = lookdev::parse_export_format(*name);
       } catch (const Error&) {  // its own message quotes the name unescaped
         throw request_error("format", "expected one of yaml, materialx, cycles, got " +
                                           shown(request.at("format")));
@@ -460,8 +460,8 @@ ApiResponse NavigatorApi::export_material(std::string_view body) const {
     // the database's resolution, at most kExportResolution, so that the button answers in
     // seconds.
     const int resolution = std::min(navigator_.database().manifest().resolution, kExportResolution);
-    return ApiResponse{200, std::string(export_content_type(format)),
-                       export_document(navigator_, m, format, resolution)};
+    return ApiResponse{200, std::string(lookdev::export_content_type(format)),
+                       lookdev::export_document(navigator_, m, format, resolution)};
   });
 }
 
@@ -473,4 +473,4 @@ ApiResponse NavigatorApi::import_yaml(std::string_view body, std::string_view na
   });
 }
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::serve

@@ -1,10 +1,10 @@
-#include "serve_memory.h"
+#include <brdfnav/serve/serve_memory.h>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
 
-namespace brdfnav::cli {
+namespace brdfnav::serve {
 
 IdleRelease::IdleRelease(std::chrono::milliseconds quiet, std::function<void()> release)
     : quiet_(quiet), release_(std::move(release)), thread_([this] { run(); }) {}
@@ -68,4 +68,4 @@ bool limit_heap_arenas(int arenas) {
 #endif
 }
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::serve

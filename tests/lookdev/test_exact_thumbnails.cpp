@@ -1,8 +1,8 @@
-// The exact thumbnails of `brdfnav serve` (app/exact_thumbnails.h) under a ring's check, on the
-// small fixture database of the fuzzers (tests/fuzz/database): a ring the page leaves while its
-// render runs stops that render, and nothing of it is cached.
-#include "exact_thumbnails.h"
-#include "serve_rings.h"
+// The exact thumbnails of `brdfnav serve` (lookdev/include/brdfnav/lookdev/exact_thumbnails.h)
+// under a ring's check, on the small fixture database of the fuzzers (tests/fuzz/database): a ring
+// the page leaves while its render runs stops that render, and nothing of it is cached.
+#include <brdfnav/lookdev/exact_thumbnails.h>
+#include <brdfnav/serve/serve_rings.h>
 
 #include <brdfnav/navigator/database.h>
 #include <brdfnav/precompute/database.h>
@@ -14,7 +14,7 @@
 #include <filesystem>
 #include <functional>
 
-namespace brdfnav::cli {
+namespace brdfnav::lookdev {
 namespace {
 
 const Database& database() {
@@ -47,8 +47,8 @@ constexpr int kSize = 128;
 TEST(ExactThumbnails, ARingLeftWhileItsRenderRunsStopsIt) {
   const ExactThumbnails exact(database(), 8);
   exact.render(ward(0.3), kSize);  // loads the map and makes the renderer, its diffuse image
-  LeftRings rings;
-  const RingId ring{"page", 1};
+  serve::LeftRings rings;
+  const serve::RingId ring{"page", 1};
   rings.enter(ring);
   int calls = 0;
   const std::function<void()> check = [&] {
@@ -56,7 +56,7 @@ TEST(ExactThumbnails, ARingLeftWhileItsRenderRunsStopsIt) {
     rings.check(ring)();
   };
   const double start = cpu_seconds();
-  EXPECT_THROW(exact.render(ward(0.1), kSize, check), RingLeft);
+  EXPECT_THROW(exact.render(ward(0.1), kSize, check), serve::RingLeft);
   const double stopped = cpu_seconds() - start;
   EXPECT_EQ(calls, 2);
 
@@ -76,14 +76,14 @@ TEST(ExactThumbnails, ARingLeftWhileItsRenderRunsStopsIt) {
 // A check that throws before the render starts leaves the renderer free for the next request.
 TEST(ExactThumbnails, ARingLeftBeforeItsRenderStartsRendersNothing) {
   const ExactThumbnails exact(database(), 8);
-  LeftRings rings;
+  serve::LeftRings rings;
   rings.enter({"page", 2});
   int calls = 0;
   const std::function<void()> check = [&] {
     ++calls;
     rings.check({"page", 1})();
   };
-  EXPECT_THROW(exact.render(ward(0.1), 8, check), RingLeft);
+  EXPECT_THROW(exact.render(ward(0.1), 8, check), serve::RingLeft);
   EXPECT_EQ(calls, 1);
   EXPECT_EQ(exact.render(ward(0.1), 8)->rgba,
             ExactThumbnails(database(), 8).render(ward(0.1))->rgba);
@@ -114,4 +114,4 @@ TEST(ExactThumbnails, AMaterialInOtherColoursSharesItsLobesRender) {
 }
 
 }  // namespace
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::lookdev

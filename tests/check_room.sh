@@ -1,7 +1,7 @@
 #!/bin/sh
 # Fails when LIBRARY (a static library) needs a brdfnav symbol that neither it nor BELOW (the
-# libraries it may stand on) defines: an arrow from it to a room above. Prints the first ones.
-# Usage: check_stands_on_core.sh NM LIBRARY BELOW...
+# libraries of the rooms it may stand on) defines: an arrow from its room to one above, or to one
+# it may not use. Prints the first ones. Usage: check_room.sh NM LIBRARY BELOW...
 set -eu
 nm=$1 library=$2
 shift 2

@@ -1,11 +1,12 @@
-// The navigator's page (app/web/), compiled into the binary at build time by cmake/embed_web.cmake
-// so that `brdfnav serve` needs no files beside it and fetches nothing from anywhere.
+// The navigator's page (serve/web/), compiled into the binary at build time by
+// cmake/embed_web.cmake so that `brdfnav serve` needs no files beside it and fetches nothing from
+// anywhere.
 #pragma once
 
 #include <span>
 #include <string_view>
 
-namespace brdfnav::cli {
+namespace brdfnav::serve {
 
 struct WebAsset {
   std::string_view path;          // URL path: "/index.html", "/app.js", ...
@@ -15,4 +16,4 @@ struct WebAsset {
 
 std::span<const WebAsset> web_assets();
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::serve

@@ -12,7 +12,7 @@
 #include <mutex>
 #include <thread>
 
-namespace brdfnav::cli {
+namespace brdfnav::serve {
 
 class IdleRelease {
  public:
@@ -60,4 +60,4 @@ void trim_heap();
 // Whether the allocator took the limit.
 bool limit_heap_arenas(int arenas);
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::serve

@@ -15,7 +15,7 @@
 #include <functional>
 #include <memory>
 
-namespace brdfnav::cli {
+namespace brdfnav::lookdev {
 
 class ExactThumbnails {
  public:
@@ -51,4 +51,4 @@ class ExactThumbnails {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::lookdev

@@ -3,9 +3,9 @@
 // is a plain value: a status, a content type and a body.
 #pragma once
 
-#include "exact_thumbnails.h"
-#include "final_images.h"
-#include "serve_rings.h"
+#include <brdfnav/lookdev/exact_thumbnails.h>
+#include <brdfnav/lookdev/final_images.h>
+#include <brdfnav/serve/serve_rings.h>
 
 #include <brdfnav/navigator/navigator.h>
 #include <brdfnav/navigator/thumbnails.h>
@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-namespace brdfnav::cli {
+namespace brdfnav::serve {
 
 // The largest resolution at which the export for renderers renders the material and its ggx form
 // to state their distance (the database's, if smaller).
@@ -58,8 +58,9 @@ struct ApiRequest {
 struct ApiOptions {
   std::filesystem::path db;
   int resolution = 128;  // thumbnail width and height
-  // The bar of the database's blend check under which a final image is a blend (FinalImages).
-  double faithful_blend = FinalImages::kFaithfulBlend;
+  // The bar of the database's blend check under which a final image is a blend
+  // (lookdev::FinalImages).
+  double faithful_blend = lookdev::FinalImages::kFaithfulBlend;
 };
 
 // Opens the database, the thumbnails and the colour pipeline once; every method is const and
@@ -83,15 +84,15 @@ class NavigatorApi {
   ApiResponse info() const;
   // POST /api/neighbors {material, radius, tab[, k, exact, ring]} -> {neighbors: [{tab, label,
   // distance, flags, material}]}. With exact: true each offer moves until its final image
-  // (FinalImages: the render, or the blend where the database vouches for it) is at `radius`
-  // from the material's (ExactSteps, at the database's resolution), `distance` then the
+  // (lookdev::FinalImages: the render, or the blend where the database vouches for it) is at
+  // `radius` from the material's (ExactSteps, at the database's resolution), `distance` then the
   // measured one: slower (a few images per offer), and the ring's steps equal. `ring`
   // ({client, id}), here and in /api/thumbnail: once the same client asks for a later ring, the
   // renders still to start for this one are dropped and the answer is 409.
   ApiResponse neighbors(std::string_view body) const;
   // POST /api/thumbnail {material[, display, view, preview, size]} -> image/png: the final
-  // image of the material (FinalImages: the exact render, or the blend where the database's
-  // blend check vouches for it) at `size` (the thumbnails' resolution, or one of
+  // image of the material (lookdev::FinalImages: the exact render, or the blend where the
+  // database's blend check vouches for it) at `size` (the thumbnails' resolution, or one of
   // kSharpThumbnailSizes above it: /api/info's thumbnail_sizes), or with preview: true the quick
   // blend of the database's images (Thumbnails) at the thumbnails' resolution, vouched for or
   // not. The header X-Brdfnav-Image says which: "blend" or "render". Alpha is the coverage, the
@@ -117,11 +118,11 @@ class NavigatorApi {
   Thumbnails thumbnails_;
   // The exact thumbnails at every size, and the renders of exact steps at the database's
   // resolution (the metric's).
-  ExactThumbnails exact_;
-  FinalImages final_;       // what the page keeps: exact_'s renders or thumbnails_' blends
-  std::vector<int> sizes_;  // of a thumbnail: the thumbnails' resolution first
+  lookdev::ExactThumbnails exact_;
+  lookdev::FinalImages final_;  // what the page keeps: exact_'s renders or thumbnails_' blends
+  std::vector<int> sizes_;      // of a thumbnail: the thumbnails' resolution first
   mutable LeftRings rings_;
   ocio::ColorPipeline color_;
 };
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::serve

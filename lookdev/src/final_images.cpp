@@ -1,9 +1,9 @@
-#include "final_images.h"
+#include <brdfnav/lookdev/final_images.h>
 
 #include <algorithm>
 #include <optional>
 
-namespace brdfnav::cli {
+namespace brdfnav::lookdev {
 
 FinalImages::FinalImages(const Thumbnails& blends, const ExactThumbnails& exact, double faithful)
     : blends_(blends), exact_(exact), faithful_(faithful) {}
@@ -42,4 +42,4 @@ ExactSteps FinalImages::steps_from(const Material& current, double radius,
   return steps;
 }
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::lookdev

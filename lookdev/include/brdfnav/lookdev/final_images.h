@@ -8,14 +8,14 @@
 // the exact render (ExactThumbnails) is.
 #pragma once
 
-#include "exact_thumbnails.h"
+#include <brdfnav/lookdev/exact_thumbnails.h>
 
 #include <brdfnav/navigator/thumbnails.h>
 
 #include <functional>
 #include <memory>
 
-namespace brdfnav::cli {
+namespace brdfnav::lookdev {
 
 class FinalImages {
  public:
@@ -55,4 +55,4 @@ class FinalImages {
   double faithful_;
 };
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::lookdev

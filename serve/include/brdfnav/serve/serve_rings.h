@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace brdfnav::cli {
+namespace brdfnav::serve {
 
 // What a request names: a page (`client`) and the number of its ring.
 struct RingId {
@@ -52,4 +52,4 @@ class LeftRings {
   std::list<std::string> uses_;  // most recently heard from first
 };
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::serve

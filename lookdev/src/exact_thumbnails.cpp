@@ -1,4 +1,4 @@
-#include "exact_thumbnails.h"
+#include <brdfnav/lookdev/exact_thumbnails.h>
 
 #include <brdfnav/precompute/database.h>
 #include <brdfnav/precompute/profile.h>
@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-namespace brdfnav::cli {
+namespace brdfnav::lookdev {
 
 struct ExactThumbnails::Impl {
   // One resolution's renderer: it renders one image at a time.
@@ -150,4 +150,4 @@ ExactSteps ExactThumbnails::steps_from(const Material& current, int resolution,
   return steps;
 }
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::lookdev

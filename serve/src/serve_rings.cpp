@@ -1,8 +1,8 @@
-#include "serve_rings.h"
+#include <brdfnav/serve/serve_rings.h>
 
 #include <algorithm>
 
-namespace brdfnav::cli {
+namespace brdfnav::serve {
 
 void LeftRings::enter(const RingId& id) {
   const std::lock_guard lock(mutex_);
@@ -33,4 +33,4 @@ std::function<void()> LeftRings::check(const RingId& id) const {
   };
 }
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::serve

@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-namespace brdfnav::cli {
+namespace brdfnav::lookdev {
 
 enum class ExportFormat { yaml, materialx, cycles };
 
@@ -56,4 +56,4 @@ std::string cycles_document(const RendererExport& e);
 std::string export_document(const Navigator& navigator, const Material& chosen, ExportFormat format,
                             int resolution);
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::lookdev

@@ -1,7 +1,7 @@
-// `brdfnav serve`'s JSON API (app/serve_api.h) called directly, as the HTTP server calls it, on
-// the small fixture database of the fuzzers (tests/fuzz/database): the answers to requests the
-// browser test cannot make as easily, such as very long names and every wrong method.
-#include "serve_api.h"
+// `brdfnav serve`'s JSON API (brdfnav/serve/serve_api.h) called directly, as the HTTP server calls
+// it, on the small fixture database of the fuzzers (tests/fuzz/database): the answers to requests
+// the browser test cannot make as easily, such as very long names and every wrong method.
+#include <brdfnav/serve/serve_api.h>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-namespace brdfnav::cli {
+namespace brdfnav::serve {
 namespace {
 
 const NavigatorApi& api() {
@@ -201,7 +201,7 @@ TEST(ServeApi, TheRendersOfARingThePageHasLeftAreDropped) {
 // A ring the page leaves while its thumbnail renders: the render stops and the request answers
 // 409. The page moves on once the render has had time to start (a 512 px render takes seconds
 // here); had it not started, it would be dropped before starting, with the same answer.
-// tests/app/test_exact_thumbnails.cpp shows deterministically where the render stops.
+// tests/lookdev/test_exact_thumbnails.cpp shows deterministically where the render stops.
 TEST(ServeApi, ARingLeftWhileItsThumbnailRendersAnswers409) {
   ApiResponse running;
   std::thread page([&] {
@@ -285,4 +285,4 @@ TEST(ServeApi, TheExportsFormatIsCheckedAndARenderersNeedsGgx) {
 }
 
 }  // namespace
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::serve

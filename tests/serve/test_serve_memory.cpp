@@ -1,6 +1,6 @@
 // A server's memory: IdleRelease's release runs once per quiet spell after requests, never while
 // one is in flight, and not before the first; the heap's arenas take a limit.
-#include "serve_memory.h"
+#include <brdfnav/serve/serve_memory.h>
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <optional>
 #include <thread>
 
-namespace brdfnav::cli {
+namespace brdfnav::serve {
 namespace {
 
 using namespace std::chrono_literals;
@@ -88,4 +88,4 @@ TEST(HeapArenas, AnotherAllocatorRefusesTheLimit) {
 #endif
 
 }  // namespace
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::serve

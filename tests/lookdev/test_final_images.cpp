@@ -1,8 +1,9 @@
-// The final images (app/final_images.h) and the server's thumbnails on the shared test database,
-// whose build records a blend check per cell: a material in a cell whose check is within the bar
-// shows its blend, any other its exact render, and exact steps are measured on what is shown.
-#include "final_images.h"
-#include "serve_api.h"
+// The final images (lookdev/include/brdfnav/lookdev/final_images.h) and the server's thumbnails on
+// the shared test database, whose build records a blend check per cell: a material in a cell whose
+// check is within the bar shows its blend, any other its exact render, and exact steps are measured
+// on what is shown.
+#include <brdfnav/lookdev/final_images.h>
+#include <brdfnav/serve/serve_api.h>
 
 #include "cli_runner.h"
 
@@ -15,7 +16,7 @@
 #include <optional>
 #include <utility>
 
-namespace brdfnav::cli {
+namespace brdfnav::lookdev {
 namespace {
 
 struct Suite {
@@ -127,9 +128,9 @@ TEST(FinalImages, StepsAreMeasuredOnTheImagesShown) {
 // The server answers the final image and says which it is.
 TEST(FinalImages, TheServerSaysWhetherAThumbnailIsABlendOrARender) {
   const auto [low, high] = extreme_cells();
-  const NavigatorApi api(ApiOptions{suite().dir, suite().resolution, low.error});
+  const serve::NavigatorApi api(serve::ApiOptions{suite().dir, suite().resolution, low.error});
   const auto kind = [&](const Material& m, const std::string& extra) {
-    const ApiResponse answer = api.handle(
+    const serve::ApiResponse answer = api.handle(
         {"POST", "/api/thumbnail", {}, R"({"material": )" + material_json(m).dump() + extra + "}"});
     EXPECT_EQ(answer.status, 200) << answer.body;
     for (const auto& [name, value] : answer.headers)
@@ -142,4 +143,4 @@ TEST(FinalImages, TheServerSaysWhetherAThumbnailIsABlendOrARender) {
 }
 
 }  // namespace
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::lookdev

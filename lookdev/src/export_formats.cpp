@@ -1,4 +1,4 @@
-#include "export_formats.h"
+#include <brdfnav/lookdev/export_formats.h>
 
 #include <brdfnav/navigator/navigation_json.h>
 #include <brdfnav/navigator/navigation_yaml.h>
@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace brdfnav::cli {
+namespace brdfnav::lookdev {
 
 namespace {
 
@@ -268,4 +268,4 @@ std::string export_document(const Navigator& navigator, const Material& chosen, 
   return format == ExportFormat::materialx ? materialx_document(e) : cycles_document(e);
 }
 
-}  // namespace brdfnav::cli
+}  // namespace brdfnav::lookdev
