@@ -1,6 +1,8 @@
 // brdfnav: the command-line front end. Every failure prints one line "brdfnav: error: ..." naming
-// what is wrong and exits non-zero: 2 for a command line that does not parse, 1 for a command
-// that fails. Commands that write files write them atomically.
+// what is wrong and exits with the status of its kind (exit_status(), listed by the help's footer):
+// 2 a wrong command line or argument, 3 a malformed material, spec or profile, 4 a file that
+// cannot be read or written, 5 a damaged or mismatched database, 1 an internal failure. Commands
+// that write files write them atomically.
 #include "commands.h"
 
 #include <brdfnav/core/error.h>

@@ -19,7 +19,7 @@ enum class ExportFormat { yaml, materialx, cycles };
 
 // "yaml", "materialx", "cycles".
 const std::vector<std::string>& export_format_names();
-// std::invalid_argument naming the choices for an unknown name.
+// Error(invalid_argument) naming "format" and the choices for an unknown name.
 ExportFormat parse_export_format(std::string_view name);
 std::string_view export_content_type(ExportFormat format);
 std::string_view export_extension(ExportFormat format);  // ".yaml", ".mtlx", ".json"
@@ -41,8 +41,8 @@ struct RendererExport {
 
 // The ggx form of `chosen` and the measures, rendered at `resolution` (0: the database's), those
 // of MaterialX's terms for `format` materialx.
-// Throws NavigatorError when the database holds no ggx model, std::runtime_error when its
-// environment map is missing or no longer the one it was built with.
+// Throws NavigatorError when the database holds no ggx model, and load_database_env()'s
+// Error(database) when its environment map is missing or no longer the one it was built with.
 RendererExport make_renderer_export(const Navigator& navigator, const Material& chosen,
                                     ExportFormat format, int resolution);
 
