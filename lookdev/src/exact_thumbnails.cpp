@@ -1,8 +1,8 @@
 #include <brdfnav/lookdev/exact_thumbnails.h>
 
-#include <brdfnav/precompute/database.h>
 #include <brdfnav/precompute/profile.h>
 #include <brdfnav/renderer/render.h>
+#include <brdfnav/lookdev/database_env.h>
 
 #include <algorithm>
 #include <list>

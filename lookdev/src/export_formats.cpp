@@ -2,8 +2,8 @@
 
 #include <brdfnav/navigator/navigation_json.h>
 #include <brdfnav/navigator/navigation_yaml.h>
-#include <brdfnav/precompute/database.h>
 #include <brdfnav/renderer/render.h>
+#include <brdfnav/lookdev/database_env.h>
 
 #include <algorithm>
 #include <cstdio>

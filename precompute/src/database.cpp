@@ -1,15 +1,10 @@
-// What the builder reloads of a finished build: the environment map a database or a shard
-// records, and the merge of recorded shards (the settings come from the shards, not the caller).
+// What the builder reloads of a finished build: the merge of recorded shards (the settings, the
+// map and the scene come from the shards, not the caller).
 #include <brdfnav/precompute/database.h>
 
 #include <brdfnav/navigator/database_format.h>
 
 namespace brdfnav {
-
-EnvMap load_database_env(const Database& db) {
-  const Manifest& m = db.manifest();
-  return load_recorded_env(m.env_path, m.env_hash, (db.dir() / db::kManifestFile).string());
-}
 
 void merge_recorded_shards(const std::vector<std::filesystem::path>& shards,
                            const std::filesystem::path& out, int threads,

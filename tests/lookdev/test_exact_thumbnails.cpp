@@ -8,6 +8,7 @@
 #include <brdfnav/precompute/database.h>
 #include <brdfnav/precompute/profile.h>
 #include <brdfnav/renderer/render.h>
+#include <brdfnav/lookdev/database_env.h>
 #include <gtest/gtest.h>
 
 #include <ctime>

@@ -5,6 +5,7 @@
 #include <brdfnav/renderer/image_output.h>
 #include <brdfnav/renderer/render.h>
 #include <brdfnav/studies/fit_study.h>
+#include <brdfnav/lookdev/database_env.h>
 #include <gtest/gtest.h>
 
 #include "database_fixture.h"

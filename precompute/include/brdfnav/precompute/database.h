@@ -56,10 +56,4 @@ void merge_recorded_shards(const std::vector<std::filesystem::path>& shards,
                            const std::filesystem::path& out, int threads,
                            const PrecomputeObserver& observer);
 
-// The environment map the database's images were rendered under, loaded from the manifest's path
-// (NaN/Inf texels set to 0, as a --sanitize-env build did) and checked against the manifest's
-// pixel SHA-1. Throws DatabaseError naming the map and the manifest when the file has changed
-// since the build or can no longer be read.
-EnvMap load_database_env(const Database& db);
-
 }  // namespace brdfnav

@@ -1,0 +1,12 @@
+#include <brdfnav/lookdev/database_env.h>
+
+#include <brdfnav/navigator/database_format.h>
+
+namespace brdfnav {
+
+EnvMap load_database_env(const Database& db) {
+  const Manifest& m = db.manifest();
+  return load_recorded_env(m.env_path, m.env_hash, (db.dir() / db::kManifestFile).string());
+}
+
+}  // namespace brdfnav
