@@ -1,8 +1,7 @@
 #include <brdfnav/lookdev/exact_thumbnails.h>
 
-#include <brdfnav/precompute/profile.h>
-#include <brdfnav/renderer/render.h>
 #include <brdfnav/lookdev/database_env.h>
+#include <brdfnav/renderer/render.h>
 
 #include <algorithm>
 #include <list>
@@ -88,7 +87,7 @@ struct ExactThumbnails::Impl {
         if (!scene) scene.emplace(Scene::load(m.scene));
       }
       RenderOptions options;
-      options.quality = make_profile(m.profile).quality;
+      options.quality = quality_from_record(m.render_quality);
       s.renderer.emplace(*env, *scene, res, options);
       s.diffuse = std::make_shared<const Image>(s.renderer->diffuse());
     }

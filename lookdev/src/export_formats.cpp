@@ -1,9 +1,9 @@
 #include <brdfnav/lookdev/export_formats.h>
 
+#include <brdfnav/lookdev/database_env.h>
 #include <brdfnav/navigator/navigation_json.h>
 #include <brdfnav/navigator/navigation_yaml.h>
 #include <brdfnav/renderer/render.h>
-#include <brdfnav/lookdev/database_env.h>
 
 #include <algorithm>
 #include <cstdio>

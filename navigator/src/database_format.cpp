@@ -338,6 +338,11 @@ Manifest read_manifest(const std::filesystem::path& path) {
       throw DatabaseError(file + ": q_nodes must increase strictly from 0 to 1");
     m.files = require(root, "files", file).as<std::map<std::string, std::string>>();
     m.grids = parse_grids(require(root, "models", file), m.files.size(), file);
+    if (const YAML::Node quality = root["render_quality"]) {
+      if (!quality.IsMap()) throw DatabaseError(file + ": 'render_quality' is not a map");
+      for (const auto& knob : quality)
+        m.render_quality.emplace_back(knob.first.as<std::string>(), knob.second.as<double>());
+    }
     return m;
   } catch (const YAML::Exception& e) {
     throw DatabaseError(file + ": line " + std::to_string(e.mark.line + 1) + ": " + e.msg);

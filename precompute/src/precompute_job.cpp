@@ -53,14 +53,12 @@ db::BuildSettings build_settings(const Profile& p, const EnvMap& env, const Scen
   s.env_height = env.height();
   s.q_nodes = diffuse_fraction_nodes(p.q_nodes);
   s.grids = p.grids;
-  const RenderQuality& q = p.quality;
-  s.options = {{"render_quality",
-                {{"texels_per_width", q.texels_per_width},
-                 {"hot_texels_per_width", q.hot_texels_per_width},
-                 {"max_node", q.max_node},
-                 {"reach", q.reach},
-                 {"max_split", std::int64_t{q.max_split}},
-                 {"max_nodes", std::int64_t{q.max_nodes}}}},
+  db::SettingsGroup quality{"render_quality", {}};
+  for (const QualityKnob& knob : kQualityKnobs)
+    quality.values.emplace_back(
+        knob.name, knob.real ? db::SettingValue{p.quality.*(knob.real)}
+                             : db::SettingValue{std::int64_t{p.quality.*(knob.integer)}});
+  s.options = {std::move(quality),
                {"pca",
                 {{"components", std::int64_t{p.pca.components}},
                  {"oversample", std::int64_t{p.pca.oversample}},

@@ -6,9 +6,13 @@
 #include "quadrature.h"
 #include "ward_grid.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace brdfnav {
 
@@ -20,6 +24,28 @@ RenderQuality RenderQuality::finer(double factor) const {
   q.reach *= 1 + 0.25 * std::log2(std::max(factor, 1.0));
   q.max_split = static_cast<int>(std::ceil(max_split * factor));
   q.max_nodes = static_cast<int>(std::ceil(max_nodes * factor * factor));
+  return q;
+}
+
+RenderQuality quality_from_record(std::span<const std::pair<std::string, double>> record) {
+  RenderQuality q;
+  for (const auto& [name, value] : record) {
+    const auto knob = std::find_if(std::begin(kQualityKnobs), std::end(kQualityKnobs),
+                                   [&](const QualityKnob& k) { return name == k.name; });
+    if (knob == std::end(kQualityKnobs))
+      throw RenderError("render quality: unknown knob '" + name + "'");
+    if (!(value > 0) || !std::isfinite(value))
+      throw RenderError("render quality: " + name + " is " + std::to_string(value) +
+                        "; every knob is positive and finite");
+    if (knob->real) {
+      q.*(knob->real) = value;
+    } else {
+      if (value != std::floor(value) || value > std::numeric_limits<int>::max())
+        throw RenderError("render quality: " + name + " is " + std::to_string(value) +
+                          "; it is a whole number");
+      q.*(knob->integer) = static_cast<int>(value);
+    }
+  }
   return q;
 }
 
@@ -416,12 +442,15 @@ Image Renderer::materialx_ggx(const Ggx& lobe, bool compensation) {
 
 ImageMetadata render_metadata(const Renderer& renderer, const Material* material) {
   const RenderQuality& q = renderer.options().quality;
-  char quality[160];
-  std::snprintf(quality, sizeof quality,
-                "texels_per_width=%g hot_texels_per_width=%g max_node=%g reach=%g max_split=%d "
-                "max_nodes=%d",
-                q.texels_per_width, q.hot_texels_per_width, q.max_node, q.reach, q.max_split,
-                q.max_nodes);
+  std::string quality;  // "texels_per_width=1.25 ... max_nodes=16384"
+  for (const QualityKnob& knob : kQualityKnobs) {
+    char value[32];
+    if (knob.real)
+      std::snprintf(value, sizeof value, "%g", q.*(knob.real));
+    else
+      std::snprintf(value, sizeof value, "%d", q.*(knob.integer));
+    quality += (quality.empty() ? "" : " ") + std::string(knob.name) + "=" + value;
+  }
   ImageMetadata m{{db::kHeaderEnv, renderer.env().source()},
                   {db::kHeaderEnvSha1, renderer.env().pixel_hash()},
                   {db::kHeaderScene, renderer.scene().description()},

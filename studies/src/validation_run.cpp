@@ -1,5 +1,5 @@
-#include <brdfnav/studies/validation_run.h>
 #include <brdfnav/lookdev/database_env.h>
+#include <brdfnav/studies/validation_run.h>
 
 #include <algorithm>
 #include <chrono>

@@ -4,11 +4,9 @@
 #include <brdfnav/lookdev/exact_thumbnails.h>
 #include <brdfnav/serve/serve_rings.h>
 
-#include <brdfnav/navigator/database.h>
-#include <brdfnav/precompute/database.h>
-#include <brdfnav/precompute/profile.h>
-#include <brdfnav/renderer/render.h>
 #include <brdfnav/lookdev/database_env.h>
+#include <brdfnav/navigator/database.h>
+#include <brdfnav/renderer/render.h>
 #include <gtest/gtest.h>
 
 #include <ctime>
@@ -108,7 +106,7 @@ TEST(ExactThumbnails, AMaterialInOtherColoursSharesItsLobesRender) {
   const EnvMap env = load_database_env(database());
   const Scene scene = Scene::load(database().manifest().scene);
   RenderOptions options;
-  options.quality = make_profile(database().manifest().profile).quality;
+  options.quality = quality_from_record(database().manifest().render_quality);
   Renderer renderer(env, scene, kSize, options);
   EXPECT_EQ(image->rgba, renderer.render(other).rgba);
   EXPECT_EQ(exact.render(first, kSize)->rgba, renderer.render(first).rgba);

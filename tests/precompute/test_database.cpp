@@ -1,3 +1,4 @@
+#include <brdfnav/lookdev/database_env.h>
 #include <brdfnav/navigator/blend.h>
 #include <brdfnav/navigator/database_format.h>
 #include <brdfnav/navigator/image_input.h>
@@ -5,7 +6,6 @@
 #include <brdfnav/renderer/image_output.h>
 #include <brdfnav/renderer/render.h>
 #include <brdfnav/studies/fit_study.h>
-#include <brdfnav/lookdev/database_env.h>
 #include <gtest/gtest.h>
 
 #include "database_fixture.h"
@@ -67,6 +67,16 @@ TEST(Database, OpensWithTheManifestAndTablesOfItsProfile) {
   ASSERT_NE(t, nullptr);
   EXPECT_EQ(t->nodes.size(), 4u);
   EXPECT_EQ(db.conversion(ModelId::ward, ModelId::ward), nullptr);
+  // The quality its images were made at, every knob in the table's order, reads back as it was.
+  ASSERT_EQ(m.render_quality.size(), std::size(kQualityKnobs));
+  for (std::size_t k = 0; k < m.render_quality.size(); ++k)
+    EXPECT_EQ(m.render_quality[k].first, kQualityKnobs[k].name);
+  const RenderQuality made = tiny_profile().quality, read = quality_from_record(m.render_quality);
+  for (const QualityKnob& knob : kQualityKnobs)
+    if (knob.real)
+      EXPECT_EQ(read.*(knob.real), made.*(knob.real)) << knob.name;
+    else
+      EXPECT_EQ(read.*(knob.integer), made.*(knob.integer)) << knob.name;
 }
 
 // The stored embedding reproduces the metric between the stored images (lossless basis, nodes on

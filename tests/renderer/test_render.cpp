@@ -10,9 +10,13 @@
 #include <unistd.h>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 namespace brdfnav {
 namespace {
@@ -58,6 +62,42 @@ TEST(Render, RefusesWhatCannotBeRenderedAsTheCallersMistake) {
   RenderOptions options;
   options.quality.reach = 0;
   EXPECT_THROW(Renderer(env, sphere, 8, options), RenderError);
+}
+
+// A quality written as its knobs (kQualityKnobs: an image's header, a database's manifest) reads
+// back as it was; knobs a record leaves out keep their defaults; a knob that is unknown, not
+// positive, or fractional where it counts is refused by name.
+TEST(RenderQuality, ReadsBackFromTheRecordOfItsKnobs) {
+  RenderQuality q;
+  q.texels_per_width = 2.5, q.hot_texels_per_width = 7, q.max_node = 0.125, q.reach = 4.25;
+  q.max_split = 9, q.max_nodes = 4096;
+  std::vector<std::pair<std::string, double>> record;
+  for (const QualityKnob& knob : kQualityKnobs)
+    record.emplace_back(knob.name, knob.real ? q.*(knob.real) : double(q.*(knob.integer)));
+  const RenderQuality back = quality_from_record(record);
+  for (const QualityKnob& knob : kQualityKnobs)
+    if (knob.real)
+      EXPECT_EQ(back.*(knob.real), q.*(knob.real)) << knob.name;
+    else
+      EXPECT_EQ(back.*(knob.integer), q.*(knob.integer)) << knob.name;
+
+  const std::vector<std::pair<std::string, double>> older{{"reach", 4}};
+  const RenderQuality partial = quality_from_record(older);
+  EXPECT_EQ(partial.reach, 4);
+  EXPECT_EQ(partial.max_nodes, RenderQuality{}.max_nodes);
+
+  for (const auto& [name, value, phrase] :
+       {std::tuple<std::string, double, std::string>{"knobs", 1, "unknown knob 'knobs'"},
+        {"reach", 0, "reach is"},
+        {"max_node", std::numeric_limits<double>::infinity(), "max_node is"},
+        {"max_split", 2.5, "whole number"}}) {
+    try {
+      quality_from_record(std::vector<std::pair<std::string, double>>{{name, value}});
+      ADD_FAILURE() << name << " = " << value << " was taken";
+    } catch (const RenderError& e) {
+      EXPECT_NE(std::string(e.what()).find(phrase), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(Render, FurnaceLobesAreBoundedAndPositive) {

@@ -17,6 +17,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace brdfnav {
@@ -64,6 +65,9 @@ struct Manifest {
   std::vector<double> q_nodes;
   std::vector<ProfileGrid> grids;
   std::map<std::string, std::string> files;  // path relative to the database -> SHA-1 (hex)
+  // The render quality its images were made at, knob by knob as the builder recorded them
+  // (brdfnav/renderer/render.h, kQualityKnobs and quality_from_record()).
+  std::vector<std::pair<std::string, double>> render_quality;
 };
 
 // Whether the database's blend checks were measured with the spline the blend now uses (format

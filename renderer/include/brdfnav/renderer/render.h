@@ -20,6 +20,8 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace brdfnav {
@@ -47,6 +49,28 @@ struct RenderQuality {
   // The same quadrature `factor` times finer in angle, over a wider window.
   RenderQuality finer(double factor) const;
 };
+
+// The knobs by name, in the order every record of them lists them (an image's brdfnav:quality
+// header, a database's render_quality): one table that writes and reads them. Each is a double
+// or an int of RenderQuality.
+struct QualityKnob {
+  const char* name;
+  double RenderQuality::*real = nullptr;
+  int RenderQuality::*integer = nullptr;
+};
+inline constexpr QualityKnob kQualityKnobs[] = {
+    {"texels_per_width", &RenderQuality::texels_per_width},
+    {"hot_texels_per_width", &RenderQuality::hot_texels_per_width},
+    {"max_node", &RenderQuality::max_node},
+    {"reach", &RenderQuality::reach},
+    {"max_split", nullptr, &RenderQuality::max_split},
+    {"max_nodes", nullptr, &RenderQuality::max_nodes},
+};
+// A quality as a record of its knobs lists it, `name: value`; knobs the record leaves out keep
+// RenderQuality's defaults (records written before the knob existed). RenderError naming the knob
+// for a name not in kQualityKnobs, a value that is not positive and finite, or one that is not a
+// whole number where the knob is an int.
+RenderQuality quality_from_record(std::span<const std::pair<std::string, double>> record);
 
 // Called with (rows done, rows total) from the thread that called the renderer, a few times a
 // second while it works (after each row of its own), and once at the end of each pass. An
