@@ -37,7 +37,7 @@ void print_info(const Database& db) {
               db.dir().string().c_str(), m.format_version, m.profile.c_str(), m.resolution,
               m.scene.c_str());
   std::printf("environment: %s (pixel sha1 %s)\ncomponents: %d\nq nodes: %zu\n", m.env_path.c_str(),
-              m.env_hash.c_str(), m.components, m.q_nodes.size());
+              m.env_pixel_sha1.c_str(), m.components, m.q_nodes.size());
   for (const ProfileGrid& g : m.grids)
     std::printf("model %s: %zu nodes\n", std::string(model_info(g.model).name).c_str(),
                 g.grid.node_count());

@@ -80,10 +80,10 @@ void check_image(const fs::path& path, const Manifest& m, const Image& diffuse,
     throw DatabaseError(file + ": image is " + std::to_string(header.width) + "x" +
                         std::to_string(header.height) + ", the manifest says " +
                         std::to_string(m.resolution));
-  if (header.attribute(db::kHeaderEnvSha1) != m.env_hash)
+  if (header.attribute(db::kHeaderEnvSha1) != m.env_pixel_sha1)
     throw DatabaseError(file + ": rendered under another environment map (pixel SHA-1 " +
-                        header.attribute(db::kHeaderEnvSha1) + ", the manifest says " + m.env_hash +
-                        ")");
+                        header.attribute(db::kHeaderEnvSha1) + ", the manifest says " +
+                        m.env_pixel_sha1 + ")");
   if (header.attribute(db::kHeaderScene) != m.scene)
     throw DatabaseError(file + ": rendered with scene '" + header.attribute(db::kHeaderScene) +
                         "', the manifest says '" + m.scene + "'");

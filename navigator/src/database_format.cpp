@@ -327,7 +327,7 @@ Manifest read_manifest(const std::filesystem::path& path) {
     m.scene = require(root, "scene", file).as<std::string>();
     const YAML::Node env = require(root, "environment", file);
     m.env_path = require(env, "path", file).as<std::string>();
-    m.env_hash = require(env, "pixel_sha1", file).as<std::string>();
+    m.env_pixel_sha1 = require(env, "pixel_sha1", file).as<std::string>();
     m.components = require(root, "components", file).as<int>();
     if (m.components < 1) throw DatabaseError(file + ": components must be positive");
     m.q_nodes = require(root, "q_nodes", file).as<std::vector<double>>();
@@ -364,7 +364,7 @@ ShardOrigin read_shard_origin(const std::filesystem::path& shard) {
     o.resolution = db::require(root, "resolution", file).as<int>();
     const YAML::Node env = db::require(root, "environment", file);
     o.env_path = db::require(env, "path", file).as<std::string>();
-    o.env_hash = db::require(env, "pixel_sha1", file).as<std::string>();
+    o.env_pixel_sha1 = db::require(env, "pixel_sha1", file).as<std::string>();
     o.scene = db::require(root, "scene", file).as<std::string>();
     const std::string shard_text = db::require(root, "shard", file).as<std::string>();
     if (std::sscanf(shard_text.c_str(), "%d/%d", &o.shard_index, &o.shard_count) != 2 ||

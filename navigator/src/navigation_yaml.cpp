@@ -43,7 +43,7 @@ void emit_provenance(YAML::Emitter& out, const Database& db) {
   out << YAML::Key << "scene" << YAML::Value << YAML::DoubleQuoted << m.scene;
   out << YAML::Key << "environment" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "path" << YAML::Value << YAML::DoubleQuoted << m.env_path;
-  out << YAML::Key << "pixel_sha1" << YAML::Value << m.env_hash;
+  out << YAML::Key << "pixel_sha1" << YAML::Value << m.env_pixel_sha1;
   out << YAML::EndMap;
   out << YAML::Key << "metric" << YAML::Value << YAML::DoubleQuoted << kMetric;
   out << YAML::EndMap;

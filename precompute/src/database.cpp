@@ -14,7 +14,7 @@ void merge_recorded_shards(const std::vector<std::filesystem::path>& shards,
   const ShardOrigin origin = read_shard_origin(shards.front());
   PrecomputeRequest request{make_profile(origin.profile), out, false, threads, observer};
   request.profile.resolution = origin.resolution;
-  const EnvMap env = load_recorded_env(origin.env_path, origin.env_hash,
+  const EnvMap env = load_recorded_env(origin.env_path, origin.env_pixel_sha1,
                                        (shards.front() / db::kShardFile).string());
   merge_shards(shards, request, env, Scene::load(origin.scene));
 }

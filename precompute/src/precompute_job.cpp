@@ -48,7 +48,7 @@ db::BuildSettings build_settings(const Profile& p, const EnvMap& env, const Scen
   s.resolution = p.resolution;
   s.scene = scene.description();
   s.env_path = env.source();
-  s.env_pixel_sha1 = env.pixel_hash();
+  s.env_pixel_sha1 = env.pixel_sha1();
   s.env_width = env.width();
   s.env_height = env.height();
   s.q_nodes = diffuse_fraction_nodes(p.q_nodes);

@@ -15,7 +15,7 @@ namespace {
 // The SHA-1 of the float RGB texels' bytes, row 0 first: what OpenImageIO's
 // ImageBufAlgo::computePixelHashSHA1() gave for them, which older manifests record
 // (tests/renderer/test_sha1_oiio.cpp).
-std::string pixel_sha1(const std::vector<float>& rgb) {
+std::string texels_sha1(const std::vector<float>& rgb) {
   Sha1 sha;
   sha.append(rgb.data(), rgb.size() * sizeof(float));
   return sha.digest();
@@ -119,7 +119,7 @@ EnvMap::EnvMap(int width, int height, std::vector<float> rgb, std::string source
   for (float v : rgb_)
     if (!std::isfinite(v) || v < 0)
       throw EnvMapError(source_ + ": texels must be finite and non-negative");
-  hash_ = pixel_sha1(rgb_);
+  pixel_sha1_ = texels_sha1(rgb_);
 }
 
 Vec3 EnvMap::direction(double u, double v) {
@@ -143,9 +143,9 @@ EnvMap load_recorded_env(const std::string& path, const std::string& pixel_sha1,
     throw EnvMapError(e.what() + (" (the environment map " + recorder + " names)"),
                       ErrorCode::database);
   }
-  if (env->pixel_hash() != pixel_sha1)
+  if (env->pixel_sha1() != pixel_sha1)
     throw EnvMapError(path + ": changed since the database was built (pixel sha1 " +
-                          env->pixel_hash() + ", " + recorder + " says " + pixel_sha1 + ")",
+                          env->pixel_sha1() + ", " + recorder + " says " + pixel_sha1 + ")",
                       ErrorCode::database);
   return std::move(*env);
 }

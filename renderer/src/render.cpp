@@ -452,7 +452,7 @@ ImageMetadata render_metadata(const Renderer& renderer, const Material* material
     quality += (quality.empty() ? "" : " ") + std::string(knob.name) + "=" + value;
   }
   ImageMetadata m{{db::kHeaderEnv, renderer.env().source()},
-                  {db::kHeaderEnvSha1, renderer.env().pixel_hash()},
+                  {db::kHeaderEnvSha1, renderer.env().pixel_sha1()},
                   {db::kHeaderScene, renderer.scene().description()},
                   {db::kHeaderResolution, std::to_string(renderer.resolution())},
                   {db::kHeaderRendererRevision, std::to_string(kRendererRevision)},

@@ -245,7 +245,7 @@ json database_json(const Database& db) {
           {"profile", m.profile},
           {"resolution", m.resolution},
           {"scene", m.scene},
-          {"environment", {{"path", m.env_path}, {"pixel_sha1", m.env_hash}}},
+          {"environment", {{"path", m.env_path}, {"pixel_sha1", m.env_pixel_sha1}}},
           {"components", m.components}};
 }
 

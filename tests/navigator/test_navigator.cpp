@@ -602,7 +602,8 @@ TEST(NavigationYaml, AnExportReadsBackAsItsMaterial) {
   EXPECT_EQ(p["manifest_sha1"].as<std::string>(),
             file_sha1(nav.database().dir() / "manifest.yaml"));
   EXPECT_EQ(p["environment"]["path"].as<std::string>(), nav.database().manifest().env_path);
-  EXPECT_EQ(p["environment"]["pixel_sha1"].as<std::string>(), nav.database().manifest().env_hash);
+  EXPECT_EQ(p["environment"]["pixel_sha1"].as<std::string>(),
+            nav.database().manifest().env_pixel_sha1);
   EXPECT_THAT(p["metric"].as<std::string>(), HasSubstr("cube-root RMS"));
   const YAML::Node eq = doc["equivalents"];
   ASSERT_EQ(eq.size(), static_cast<std::size_t>(kModelCount - 1));

@@ -88,7 +88,7 @@ class NavigatorRendered : public ::testing::Test {
     const RenderedDatabase& db = RenderedDatabase::get();
     if (db.manifest.profile == "smoke") GTEST_SKIP() << "the smoke profile makes no accuracy claim";
     // The renderer must see what the database's images saw.
-    ASSERT_EQ(db.env.pixel_hash(), db.manifest.env_hash);
+    ASSERT_EQ(db.env.pixel_sha1(), db.manifest.env_pixel_sha1);
     ASSERT_EQ(db.manifest.scene, "sphere");
   }
 };

@@ -57,7 +57,7 @@ TEST(Database, OpensWithTheManifestAndTablesOfItsProfile) {
   EXPECT_EQ(m.profile, "unit");
   EXPECT_EQ(m.resolution, 8);
   EXPECT_EQ(m.scene, "sphere");
-  EXPECT_EQ(m.env_hash, fixture().env.pixel_hash());
+  EXPECT_EQ(m.env_pixel_sha1, fixture().env.pixel_sha1());
   EXPECT_EQ(m.q_nodes, diffuse_fraction_nodes(5));
   ASSERT_EQ(m.grids.size(), 3u);
   EXPECT_EQ(m.grids[1].grid.axis(0), (std::vector<double>{0.02, 0.3}));
@@ -395,8 +395,8 @@ TEST(Database, RejectsAnImageFromAnotherEnvironment) {
 // Whatever renders against a database (validate's exact distances) must see the map its images
 // saw: a manifest whose map is now another file opens, but its map does not load.
 TEST(Database, LoadsItsEnvironmentMapOnlyAsTheImagesSawIt) {
-  EXPECT_EQ(load_database_env(Database::open(fixture().db)).pixel_hash(),
-            fixture().env.pixel_hash());
+  EXPECT_EQ(load_database_env(Database::open(fixture().db)).pixel_sha1(),
+            fixture().env.pixel_sha1());
   const fs::path dir = copy_of_reference("other_env");
   // Not the default map, whichever that is.
   const std::string other = std::string(kDefaultEnvPath).find("courtyard") == std::string::npos

@@ -41,12 +41,12 @@ TEST(Sha1, OfFloatRgbIsOpenImageIOsPixelHash) {
   }
 }
 
-// What EnvMap::pixel_hash() records: the hash of the map's float RGB texels as loaded.
+// What EnvMap::pixel_sha1() records: the hash of the map's float RGB texels as loaded.
 TEST(Sha1, AnEnvironmentMapsPixelHashIsTheHashOfItsTexels) {
   const EnvMap env = EnvMap::load(kDefaultEnvPath, {}, [](const std::string&) {});
   const OIIO::ImageBuf buf(OIIO::ImageSpec(env.width(), env.height(), 3, OIIO::TypeDesc::FLOAT),
                            const_cast<float*>(env.pixels().data()));
-  EXPECT_EQ(env.pixel_hash(), OIIO::ImageBufAlgo::computePixelHashSHA1(buf));
+  EXPECT_EQ(env.pixel_sha1(), OIIO::ImageBufAlgo::computePixelHashSHA1(buf));
 }
 
 }  // namespace

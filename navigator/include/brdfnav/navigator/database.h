@@ -60,7 +60,7 @@ struct Manifest {
   std::string profile;
   int resolution = 0;
   std::string scene;
-  std::string env_path, env_hash;
+  std::string env_path, env_pixel_sha1;
   int components = 0;  // embedding coefficients per channel
   std::vector<double> q_nodes;
   std::vector<ProfileGrid> grids;
@@ -83,7 +83,7 @@ std::string file_sha1(const std::filesystem::path& path);
 struct ShardOrigin {
   std::string profile;
   int resolution = 0;
-  std::string env_path, env_hash, scene;
+  std::string env_path, env_pixel_sha1, scene;
   int shard_index = 0, shard_count = 1;
   std::map<std::string, std::string> files;  // the shard's images -> SHA-1
 };

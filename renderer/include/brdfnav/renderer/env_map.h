@@ -68,7 +68,7 @@ class EnvMap {
   // The file path, or the description given to the in-memory constructor.
   const std::string& source() const { return source_; }
   // SHA-1 of the texels as rendered (after clamping/sanitising), for provenance.
-  const std::string& pixel_hash() const { return hash_; }
+  const std::string& pixel_sha1() const { return pixel_sha1_; }
 
   // World direction of map coordinates (u, v) in [0, 1]^2, and back (see the file comment).
   static Vec3 direction(double u, double v);
@@ -77,7 +77,7 @@ class EnvMap {
  private:
   int width_ = 0, height_ = 0;
   std::vector<float> rgb_;
-  std::string source_, hash_;
+  std::string source_, pixel_sha1_;
 };
 
 // The map at `path` whose texels a build recorded (`pixel_sha1`), loaded as every build loaded
