@@ -14,11 +14,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <mutex>
 #include <optional>
-#include <sstream>
 
 namespace brdfnav {
 
@@ -30,13 +28,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // How a build with these inputs is made, as the manifest records it.
@@ -186,7 +177,7 @@ class Job {
     const std::string settings = db::settings_yaml(build_settings(p_, env_, scene_));
     const fs::path settings_path = at(db::kSettingsFile);
     if (fs::exists(work_) && r_.resume && fs::exists(settings_path)) {
-      if (read_text(settings_path) != settings)
+      if (read_file(settings_path) != settings)
         throw DatabaseError(settings_path.string() +
                             ": the unfinished database was started with other settings (profile, "
                             "environment, scene, resolution or renderer revision); remove " +
@@ -538,7 +529,7 @@ void take_shard(const fs::path& shard, const std::string& settings, const fs::pa
                 std::vector<bool>& seen) {
   const ShardOrigin o = read_shard_origin(shard);
   const std::string file = (shard / db::kShardFile).string();
-  if (read_text(file).rfind(settings, 0) != 0)
+  if (read_file(file).rfind(settings, 0) != 0)
     throw DatabaseError(file + ": the shard was made with other settings than " +
                         "the first shard (profile, environment, scene, resolution or renderer "
                         "revision)");

@@ -474,6 +474,26 @@ TEST(Database, ResumeReusesFinishedWorkAndIsByteIdentical) {
   EXPECT_EQ(tree(dir), tree(f.db));
 }
 
+// A work directory whose settings cannot be read is refused as what it is, naming the file, not
+// taken for a build with other settings.
+TEST(Database, ResumeNamesSettingsItCannotRead) {
+  const Fixture& f = fixture();
+  const fs::path dir = scratch("unreadable_settings"), work = dir.string() + ".partial";
+  interrupt_after_the_first_image(dir);
+  const fs::path settings = work / "settings.yaml";
+  fs::remove(settings);
+  fs::create_directory(settings);
+  try {
+    precompute_database({tiny_profile(), dir, true, 0, {}}, f.env, f.scene);
+    ADD_FAILURE() << "resumed without reading its settings";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::io) << e.what();
+    EXPECT_NE(std::string(e.what()).find(settings.string() + ": is a directory"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir));
+}
+
 // A build started by a brdfnav whose renderer made other images (another kRendererRevision) is
 // not resumed: its images would not mix with this renderer's.
 TEST(Database, ResumeRefusesTheWorkOfAnotherRendererRevision) {
