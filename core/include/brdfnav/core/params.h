@@ -1,6 +1,9 @@
 // The typed parameter table: one row per non-linear parameter of a model. This table is the only
-// place a parameter's name, unit, valid range, default and precompute grid are written down;
-// YAML, the inline spec, the C ABI, the CLI and docs/MODELS.md are all driven from it.
+// place a parameter's name, unit, valid range, default and the paper's grid (Table 1) are written
+// down; YAML, the inline spec, the C ABI, the CLI and docs/MODELS.md are all driven from it. The
+// builder's other profiles choose their own grids (precompute/src/profile.cpp): the test and
+// default profiles over these ranges (denser where a model needs it), the smoke profile from a
+// few nodes written out per model.
 #pragma once
 
 #include <limits>
