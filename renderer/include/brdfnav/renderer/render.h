@@ -140,7 +140,7 @@ class Renderer {
 
 // The most lobes that Renderer::specular() of a span renders in one pass (kernels.h's
 // FresnelBatchKernel carries one lane per lobe). Ten: the default profile's He nodes along eta
-// in one pass, which took 1.2-1.25 times as long as a pass of five (at 128 px).
+// in one pass (its cost against a pass of five: docs/RENDERER.md, Speed).
 inline constexpr int kFresnelBatch = 10;
 
 // Whether the renderer integrates the two lobes over the same nodes at every pixel and can
