@@ -1,6 +1,7 @@
 #include <brdfnav/lookdev/exact_thumbnails.h>
 
 #include <brdfnav/lookdev/database_env.h>
+#include <brdfnav/navigator/database_format.h>
 #include <brdfnav/renderer/render.h>
 
 #include <algorithm>
@@ -87,7 +88,11 @@ struct ExactThumbnails::Impl {
         if (!scene) scene.emplace(Scene::load(m.scene));
       }
       RenderOptions options;
-      options.quality = quality_from_record(m.render_quality);
+      try {
+        options.quality = quality_from_record(m.render_quality);
+      } catch (const RenderError& e) {  // the manifest's knobs: a damaged database, named
+        throw DatabaseError((database.dir() / db::kManifestFile).string() + ": " + e.what());
+      }
       s.renderer.emplace(*env, *scene, res, options);
       s.diffuse = std::make_shared<const Image>(s.renderer->diffuse());
     }

@@ -4,10 +4,13 @@
 #include <brdfnav/lookdev/exact_thumbnails.h>
 #include <brdfnav/serve/serve_rings.h>
 
+#include <brdfnav/core/atomic_file.h>
 #include <brdfnav/lookdev/database_env.h>
 #include <brdfnav/navigator/database.h>
 #include <brdfnav/renderer/render.h>
 #include <gtest/gtest.h>
+
+#include <unistd.h>
 
 #include <ctime>
 #include <filesystem>
@@ -110,6 +113,32 @@ TEST(ExactThumbnails, AMaterialInOtherColoursSharesItsLobesRender) {
   Renderer renderer(env, scene, kSize, options);
   EXPECT_EQ(image->rgba, renderer.render(other).rgba);
   EXPECT_EQ(exact.render(first, kSize)->rgba, renderer.render(first).rgba);
+}
+
+// A manifest whose recorded render quality the renderer cannot take is a damaged database: the
+// render is refused naming the manifest and the knob.
+TEST(ExactThumbnails, ADamagedRenderQualityNamesTheManifest) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("brdfnav_exact_quality_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::copy(database().dir(), dir, std::filesystem::copy_options::recursive);
+  const std::filesystem::path manifest = dir / "manifest.yaml";
+  std::string text = read_file(manifest);
+  const std::size_t at = text.find("render_quality: {");
+  ASSERT_NE(at, std::string::npos) << text;
+  text.insert(at + std::string("render_quality: {").size(), "shininess: 3, ");
+  write_file_atomic(manifest, text);
+  const Database damaged = Database::open(dir);
+  const ExactThumbnails exact(damaged, 8);
+  try {
+    exact.render(ward(0.1), kSize);
+    ADD_FAILURE() << "rendered at a quality it could not read";
+  } catch (const DatabaseError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(manifest.string()), std::string::npos) << what;
+    EXPECT_NE(what.find("unknown knob 'shininess'"), std::string::npos) << what;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
