@@ -4,8 +4,18 @@
 // onto its exit codes (app/main.cpp), the HTTP API onto status codes (serve/src/serve_api.cpp).
 //
 // The layers' own names (MaterialError, DatabaseError, ...) are Errors with a default code, so a
-// caller can still catch one layer's failures alone; none is translated into another to change
-// how it is reported.
+// caller can still catch one layer's failures alone. A layer re-throws another layer's error as
+// its own kind only where the failure means something else at its level, and says so there:
+// - what is read inside a database (an image, an image header's material, the manifest's text or
+//   its render quality) fails as a DatabaseError: the database is damaged (navigator/src/
+//   database.cpp, database_format.cpp, thumbnails.cpp; lookdev's exact_thumbnails.cpp);
+// - a material file that cannot be read is a MaterialError with ErrorCode::io, and a bad value
+//   in it is reported at its line and key (plugin/src/material_yaml.cpp);
+// - a material a host hands the C ABI as a struct is the caller's argument: invalid_argument
+//   (plugin/src/c_abi.cpp);
+// - the map a build recorded that no longer loads is an EnvMapError with ErrorCode::database
+//   (renderer/src/env_map.cpp, load_recorded_env).
+// Everywhere else an error passes through as it was thrown.
 #pragma once
 
 #include <stdexcept>
