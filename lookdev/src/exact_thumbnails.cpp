@@ -1,11 +1,11 @@
 #include <brdfnav/lookdev/exact_thumbnails.h>
 
+#include <brdfnav/core/lru_cache.h>
 #include <brdfnav/lookdev/database_env.h>
 #include <brdfnav/navigator/database_format.h>
 #include <brdfnav/renderer/render.h>
 
 #include <algorithm>
-#include <list>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -41,36 +41,20 @@ struct ExactThumbnails::Impl {
   struct LobeImages {
     std::shared_ptr<const Image> specular, diffuse;
   };
-  // The cache of lobes' renders by (lobe, resolution), least recently used out first.
-  struct Entry {
-    LobeImages lobe;
-    std::list<std::string>::iterator use;
-  };
+  // The cache of lobes' renders by (lobe, resolution), each costing its pixels, least recently
+  // used out first.
   std::mutex cache_mutex;
-  std::map<std::string, Entry> cache;
-  std::list<std::string> uses;  // most recently used first
-  std::size_t cached_pixels = 0;
+  LruCache<std::string, LobeImages> cache{capacity_pixels};
 
   std::optional<LobeImages> cached(const std::string& key) {
     const std::lock_guard lock(cache_mutex);
-    const auto it = cache.find(key);
-    if (it == cache.end()) return std::nullopt;
-    uses.splice(uses.begin(), uses, it->second.use);
-    return it->second.lobe;
+    if (const LobeImages* found = cache.find(key)) return *found;
+    return std::nullopt;
   }
 
   void keep(const std::string& key, const LobeImages& lobe) {
     const std::lock_guard lock(cache_mutex);
-    if (cache.contains(key)) return;
-    uses.push_front(key);
-    cached_pixels += lobe.specular->rgba.size() / 4;
-    cache.emplace(key, Entry{lobe, uses.begin()});
-    while (cached_pixels > capacity_pixels && cache.size() > 1) {
-      const auto oldest = cache.find(uses.back());
-      cached_pixels -= oldest->second.lobe.specular->rgba.size() / 4;
-      cache.erase(oldest);
-      uses.pop_back();
-    }
+    cache.insert(key, lobe, lobe.specular->rgba.size() / 4);
   }
 
   Slot& slot(int res) {

@@ -28,11 +28,11 @@ std::size_t pixel_bytes(const Image& image) {
 Thumbnails::Thumbnails(const Database& database, int resolution, std::size_t cache_bytes)
     : database_(database),
       resolution_(resolution > 0 ? resolution : database.manifest().resolution),
-      cache_budget_(cache_bytes) {}
+      cache_(cache_bytes) {}
 
 std::size_t Thumbnails::cached_bytes() const {
   std::lock_guard lock(mutex_);
-  return cached_bytes_;
+  return cache_.total();
 }
 
 std::vector<std::shared_ptr<const Image>> Thumbnails::images(const std::vector<Key>& keys) const {
@@ -41,9 +41,8 @@ std::vector<std::shared_ptr<const Image>> Thumbnails::images(const std::vector<K
   {
     std::lock_guard lock(mutex_);
     for (std::size_t i = 0; i < keys.size(); ++i) {
-      if (auto it = cache_.find(keys[i]); it != cache_.end()) {
-        uses_.splice(uses_.begin(), uses_, it->second.use);
-        out[i] = it->second.image;
+      if (const auto* image = cache_.find(keys[i])) {
+        out[i] = *image;
       } else {
         missing.push_back(i);
       }
@@ -70,19 +69,10 @@ std::shared_ptr<const Image> Thumbnails::read(Key key) const {
 
 std::shared_ptr<const Image> Thumbnails::keep(Key key, std::shared_ptr<const Image> image) const {
   std::lock_guard lock(mutex_);
-  if (auto it = cache_.find(key); it != cache_.end()) return it->second.image;  // read twice
-  uses_.push_front(key);
-  cache_.emplace(key, Cached{image, uses_.begin()});
-  cached_bytes_ += pixel_bytes(*image);
-  // A render in progress keeps its images through its shared_ptr; dropping them here only
-  // means the next render reads them again.
-  while (cached_bytes_ > cache_budget_ && uses_.size() > 1) {
-    const auto oldest = cache_.find(uses_.back());
-    cached_bytes_ -= pixel_bytes(*oldest->second.image);
-    cache_.erase(oldest);
-    uses_.pop_back();
-  }
-  return image;
+  // A render in progress keeps its images through its shared_ptr; dropping them from the cache
+  // only means the next render reads them again. An image read twice: the first one kept wins.
+  const std::size_t bytes = pixel_bytes(*image);
+  return cache_.insert(key, std::move(image), bytes);
 }
 
 Image Thumbnails::render(const Material& m) const {

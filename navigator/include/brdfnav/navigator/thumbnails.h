@@ -8,13 +8,12 @@
 #pragma once
 
 #include <brdfnav/core/image.h>
+#include <brdfnav/core/lru_cache.h>
 #include <brdfnav/core/material.h>
 #include <brdfnav/navigator/blend.h>
 #include <brdfnav/navigator/database.h>
 
 #include <cstddef>
-#include <list>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <utility>
@@ -44,10 +43,6 @@ class Thumbnails {
 
  private:
   using Key = std::pair<int, std::size_t>;  // (model, node); model -1 is the diffuse image
-  struct Cached {
-    std::shared_ptr<const Image> image;
-    std::list<Key>::iterator use;  // its place in uses_
-  };
   static constexpr Key kDiffuse{-1, 0};
   // The images of `keys` at thumbnail resolution: the cached ones, and the others read (in
   // parallel) and cached.
@@ -59,11 +54,9 @@ class Thumbnails {
 
   const Database& database_;
   int resolution_;
-  std::size_t cache_budget_;
   mutable std::mutex mutex_;
-  mutable std::map<Key, Cached> cache_;
-  mutable std::list<Key> uses_;  // most recently used first
-  mutable std::size_t cached_bytes_ = 0;
+  // The images by key, each costing its pixels' bytes.
+  mutable LruCache<Key, std::shared_ptr<const Image>> cache_;
 };
 
 }  // namespace brdfnav

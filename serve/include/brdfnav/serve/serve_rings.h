@@ -4,11 +4,11 @@
 // (docs/SERVE.md, "Rings left").
 #pragma once
 
+#include <brdfnav/core/lru_cache.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <list>
-#include <map>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -31,7 +31,7 @@ class RingLeft : public std::runtime_error {
 class LeftRings {
  public:
   // `clients`: how many pages it remembers (the least recently heard from forgotten first).
-  explicit LeftRings(std::size_t clients = 1024) : capacity_(clients) {}
+  explicit LeftRings(std::size_t clients = 1024) : latest_(clients) {}
 
   // Records that `id.client` now asks for `id.ring` (a page's rings only go up; an older number
   // arriving late changes nothing).
@@ -42,14 +42,8 @@ class LeftRings {
   std::function<void()> check(const RingId& id) const;
 
  private:
-  struct Client {
-    std::uint64_t ring;
-    std::list<std::string>::iterator use;
-  };
-  std::size_t capacity_;
   mutable std::mutex mutex_;
-  std::map<std::string, Client> latest_;
-  std::list<std::string> uses_;  // most recently heard from first
+  LruCache<std::string, std::uint64_t> latest_;  // each page's latest ring, a page costing 1
 };
 
 }  // namespace brdfnav::serve
