@@ -29,7 +29,10 @@ RenderQuality RenderQuality::finer(double factor) const {
 
 RenderQuality quality_from_record(std::span<const std::pair<std::string, double>> record) {
   RenderQuality q;
-  for (const auto& [name, value] : record) {
+  for (const auto& entry : record) {
+    // Not a structured binding: clang 14 (the sanitized builds') cannot capture one in a lambda.
+    const std::string& name = entry.first;
+    const double value = entry.second;
     const auto knob = std::find_if(std::begin(kQualityKnobs), std::end(kQualityKnobs),
                                    [&](const QualityKnob& k) { return name == k.name; });
     if (knob == std::end(kQualityKnobs))
