@@ -20,13 +20,8 @@ namespace {
 
 // One progress bar per phase, each line of the log on stderr.
 PrecomputeObserver stderr_observer() {
-  auto phase = std::make_shared<std::string>();
-  auto sink = std::make_shared<ProgressSink>();
   PrecomputeObserver o;
-  o.progress = [=](const std::string& name, std::size_t done, std::size_t total) {
-    if (name != *phase) *phase = name, *sink = stderr_progress(name);
-    (*sink)(int(done), int(total));
-  };
+  o.progress = stderr_progress("");
   o.log = [](const std::string& line) { std::fprintf(stderr, "brdfnav: %s\n", line.c_str()); };
   return o;
 }

@@ -31,13 +31,10 @@ void add_render_commands(CLI::App& app) {
     const Material m = load_material(*material);
     const EnvMap env = load_env(*setup);
     const Scene geometry = load_scene(*setup);
-    // Two passes, each with its own progress: the diffuse image, then the material's lobe (whose
+    // Two passes, each with its own bar: the diffuse image, then the material's lobe (whose
     // first pass may filter the map around the mirror directions, with no progress of its own).
     Renderer renderer(env, geometry, setup->resolution, {});
-    renderer.set_progress(stderr_progress("render: diffuse pass"));
-    renderer.diffuse();
-    renderer.set_progress(
-        stderr_progress("render: " + std::string(model_info(m.model).name) + " lobe pass"));
+    renderer.set_progress(stderr_progress("render: "));
     write_exr(renderer.render(m), *out, render_metadata(renderer, &m));
   });
 

@@ -98,7 +98,9 @@ struct ExactThumbnails::Impl {
     Renderer& renderer = ready_renderer(s, res);
     // Set for every render, so that none runs with another's check. A throw from it stops the
     // render between rows; the renderer keeps nothing half-made (render.h).
-    renderer.set_progress(check ? ProgressSink([check](int, int) { check(); }) : ProgressSink());
+    renderer.set_progress(
+        check ? ProgressSink([check](std::string_view, std::size_t, std::size_t) { check(); })
+              : ProgressSink());
     const LobeImages made{
         std::make_shared<const Image>(renderer.specular(make_lobe(m.model, m.params))), s.diffuse};
     keep(key, made);

@@ -148,7 +148,7 @@ class Job {
   void log(const std::string& line) const {
     if (r_.observer.log) r_.observer.log(line);
   }
-  void progress(const std::string& phase, std::size_t done, std::size_t total) const {
+  void progress(std::string_view phase, std::size_t done, std::size_t total) const {
     if (r_.observer.progress) r_.observer.progress(phase, done, total);
   }
   fs::path at(const std::string& relative) const { return work_ / relative; }

@@ -90,6 +90,13 @@ std::vector<double> mirror_widths(const SurfaceBuffer& s, double texel_angle) {
   return widths;
 }
 
+// The progress phase of a lobe's images: "MODEL lobe pass".
+template <typename L>
+std::string_view lobe_pass() {
+  static const std::string pass = std::string(L::kName) + " lobe pass";
+  return pass;
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -119,7 +126,7 @@ struct Renderer::Impl {
 
   // pixel(point, index, scratch) at every covered pixel, zero elsewhere.
   template <typename V = Rgb, typename Pixel>
-  std::vector<V> pixel_values(Pixel pixel, const ProgressSink& progress) {
+  std::vector<V> pixel_values(Pixel pixel, std::string_view pass, const ProgressSink& progress) {
     std::vector<V> values(surface.points.size(), zero<V>());
     std::vector<QuadratureScratch> scratch(threads());
     const auto row = [&](std::size_t y, int worker) {
@@ -130,7 +137,7 @@ struct Renderer::Impl {
     };
     const auto rows = std::size_t(resolution);
     parallel_for(rows, threads(), row, [&](std::size_t done) {
-      if (progress) progress(int(done), resolution);
+      if (progress) progress(pass, done, rows);
     });
     return values;
   }
@@ -153,8 +160,8 @@ struct Renderer::Impl {
 
   // Image whose covered pixels hold pixel(point, index, scratch).
   template <typename Pixel>
-  Image render_pass(Pixel pixel) {
-    return image_of(pixel_values(pixel, options.progress));
+  Image render_pass(std::string_view pass, Pixel pixel) {
+    return image_of(pixel_values(pixel, pass, options.progress));
   }
 
   // `horizon`: see Quadrature.
@@ -178,7 +185,7 @@ struct Renderer::Impl {
       return integrate(MirrorKernel(mirror, width), KernelShape::isotropic(mirror, width),
                        Vec3::Zero(), p, s);
     };
-    mirrored = pixel_values(lookup, {});
+    mirrored = pixel_values(lookup, "", {});
   }
 
   Rgb diffuse_pixel(const SurfacePoint& p, QuadratureScratch& s) const {
@@ -265,7 +272,7 @@ struct Renderer::Impl {
       }
     };
     parallel_for(std::size_t(resolution), threads(), row, [&](std::size_t done) {
-      if (options.progress) options.progress(int(done), resolution);
+      if (options.progress) options.progress("ward grid pass", done, std::size_t(resolution));
     });
     return images;
   }
@@ -278,7 +285,7 @@ struct Renderer::Impl {
         [&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
           return batch_pixel(lobe, params, p, i, s);
         },
-        options.progress);
+        lobe_pass<L>(), options.progress);
     std::vector<Image> images;
     for (std::size_t k = 0; k < params.size(); ++k) images.push_back(image_of(values, int(k)));
     return images;
@@ -307,8 +314,8 @@ void Renderer::set_progress(ProgressSink progress) {
 
 const Image& Renderer::diffuse() {
   if (!impl_->diffuse) {
-    impl_->diffuse =
-        impl_->render_pass([&](const SurfacePoint& p, std::size_t, QuadratureScratch& s) {
+    impl_->diffuse = impl_->render_pass(
+        "diffuse pass", [&](const SurfacePoint& p, std::size_t, QuadratureScratch& s) {
           return impl_->diffuse_pixel(p, s);
         });
   }
@@ -324,9 +331,11 @@ Image Renderer::specular(const Lobe& lobe) {
   prepare(lobe);  // before the pass reads it
   return std::visit(
       [&](const auto& l) {
-        return impl_->render_pass([&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
-          return impl_->specular_pixel(l, lobe, p, i, s);
-        });
+        using L = std::decay_t<decltype(l)>;
+        return impl_->render_pass(lobe_pass<L>(),
+                                  [&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
+                                    return impl_->specular_pixel(l, lobe, p, i, s);
+                                  });
       },
       lobe);
 }
@@ -432,15 +441,18 @@ Image Renderer::render(const Material& material) {
   validate(material);
   require_render_colorspace(material);
   const Lobe lobe = make_lobe(material.model, material.params);
-  return compose(diffuse(), specular(lobe), material.rho_d, material.rho_s);
+  // The diffuse pass first, as its progress reports say (arguments are evaluated in any order).
+  const Image& lambert = diffuse();
+  return compose(lambert, specular(lobe), material.rho_d, material.rho_s);
 }
 
 Image Renderer::materialx_ggx(const Ggx& lobe, bool compensation) {
   const MaterialxGgx terms{lobe.alpha_x, lobe.alpha_y, compensation};
   const Lobe shaping = lobe;
-  return impl_->render_pass([&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
-    return impl_->specular_pixel(terms, shaping, p, i, s);
-  });
+  return impl_->render_pass("materialx ggx pass",
+                            [&](const SurfacePoint& p, std::size_t i, QuadratureScratch& s) {
+                              return impl_->specular_pixel(terms, shaping, p, i, s);
+                            });
 }
 
 ImageMetadata render_metadata(const Renderer& renderer, const Material* material) {

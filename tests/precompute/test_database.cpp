@@ -436,7 +436,7 @@ TEST(Database, RefusesToOverwriteAnExistingDirectory) {
 void interrupt_after_the_first_image(const fs::path& dir) {
   const Fixture& f = fixture();
   PrecomputeRequest request{tiny_profile(), dir, false, 0, {}};
-  request.observer.progress = [](const std::string& phase, std::size_t done, std::size_t) {
+  request.observer.progress = [](std::string_view phase, std::size_t done, std::size_t) {
     if (phase == "render" && done == 1) throw Interrupted{};
   };
   EXPECT_THROW(precompute_database(request, f.env, f.scene), Interrupted);
@@ -526,7 +526,7 @@ TEST(Database, RenderProgressFollowsTheWrittenImages) {
   std::vector<std::size_t> reported;
   std::size_t render_total = 0;
   PrecomputeRequest request{tiny_profile(), dir, false, 0, {}};
-  request.observer.progress = [&](const std::string& phase, std::size_t done, std::size_t total) {
+  request.observer.progress = [&](std::string_view phase, std::size_t done, std::size_t total) {
     if (phase != "render" || done == 0) return;
     std::size_t files = 0;
     for (const auto& e : fs::recursive_directory_iterator(work))

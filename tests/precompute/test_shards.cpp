@@ -131,7 +131,7 @@ TEST(Shards, AnInterruptedShardResumesItsMidpoints) {
 
   const fs::path dir = scratch("interrupted"), work = dir.string() + ".partial";
   PrecomputeObserver interrupt;
-  interrupt.progress = [&](const std::string& phase, std::size_t, std::size_t) {
+  interrupt.progress = [&](std::string_view phase, std::size_t, std::size_t) {
     if (phase == "cells" && files_under(work, "cells").size() >= 2) throw Interrupted{};
   };
   EXPECT_THROW(shard(dir, false, interrupt), Interrupted);

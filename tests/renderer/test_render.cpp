@@ -164,6 +164,32 @@ TEST(Render, HeImagesDoNotDependOnTheRenderersHistory) {
   EXPECT_EQ(prepared.specular(smooth).rgba, used.specular(smooth).rgba);
 }
 
+// Each pass reports under its own name, its rows counted up to the whole image once at its end.
+TEST(Render, ProgressNamesEachPass) {
+  const Scene sphere = Scene::sphere();
+  Material m;
+  m.model = ModelId::cook_torrance;
+  m.params = {0.2, 0.2};
+  m.rho_d = Rgb(0.3, 0.2, 0.1);
+  m.rho_s = Rgb(0.5, 0.5, 0.5);
+  Renderer renderer(interior(), sphere, 12);
+  std::vector<std::pair<std::string, std::size_t>> reports;
+  renderer.set_progress([&](std::string_view pass, std::size_t done, std::size_t total) {
+    EXPECT_EQ(total, 12u);
+    EXPECT_LE(done, total);
+    reports.emplace_back(pass, done);
+  });
+  renderer.render(m);
+  ASSERT_FALSE(reports.empty());
+  std::vector<std::string> passes;
+  for (const auto& [pass, done] : reports) {
+    if (passes.empty() || passes.back() != pass) passes.push_back(pass);
+    if (done == 12u) EXPECT_EQ(pass, passes.back());
+  }
+  EXPECT_EQ(passes, (std::vector<std::string>{"diffuse pass", "cook_torrance lobe pass"}));
+  EXPECT_EQ(reports.back().second, 12u);
+}
+
 // A progress that throws stops the render (a ring the page has left), in the diffuse pass or in
 // the lobe's; what the renderer caches is kept only once complete, so the images it makes after
 // are those of a fresh renderer, to the bit.
@@ -177,7 +203,9 @@ TEST(Render, AStoppedRenderLeavesNothingHalfMade) {
   Renderer fresh(interior(), sphere, 16), stopped(interior(), sphere, 16);
   const Image expected = fresh.render(m);
   // Its first call, after a row or at the end of the pass, however the rows fell to the threads.
-  const auto stop = [](int, int) { throw std::runtime_error("stopped"); };
+  const auto stop = [](std::string_view, std::size_t, std::size_t) {
+    throw std::runtime_error("stopped");
+  };
   stopped.set_progress(stop);
   EXPECT_THROW(stopped.render(m), std::runtime_error);  // in the diffuse pass
   stopped.set_progress({});

@@ -3,6 +3,7 @@
 // rendered apart and merged. What reads a database is brdfnav/navigator/database.h.
 #pragma once
 
+#include <brdfnav/core/progress.h>
 #include <brdfnav/navigator/database.h>
 #include <brdfnav/precompute/embedding.h>
 #include <brdfnav/precompute/profile.h>
@@ -18,9 +19,10 @@
 
 namespace brdfnav {
 
-// Receives (phase, done, total) for progress bars and one line per event for the log.
+// Receives the build's progress (phases "render", "cells", "load images", "embedding", "fits",
+// "blend check", "checksums") and one line per event for the log.
 struct PrecomputeObserver {
-  std::function<void(const std::string& phase, std::size_t done, std::size_t total)> progress;
+  ProgressSink progress;
   std::function<void(const std::string& line)> log;
 };
 

@@ -13,6 +13,7 @@
 #include <brdfnav/core/grid.h>
 #include <brdfnav/core/image.h>
 #include <brdfnav/core/material.h>
+#include <brdfnav/core/progress.h>
 #include <brdfnav/renderer/env_map.h>
 #include <brdfnav/renderer/scene.h>
 
@@ -72,12 +73,12 @@ inline constexpr QualityKnob kQualityKnobs[] = {
 // whole number where the knob is an int.
 RenderQuality quality_from_record(std::span<const std::pair<std::string, double>> record);
 
-// Called with (rows done, rows total) from the thread that called the renderer, a few times a
-// second while it works (after each row of its own), and once at the end of each pass. An
-// exception it throws stops the render (no new row starts; it is rethrown once the rows under way
-// are done): a caller's way to drop work nobody waits for. What the renderer caches (diffuse(),
-// prepare()) is kept only once complete, so the next image is the one a fresh renderer makes.
-using ProgressSink = std::function<void(int done, int total)>;
+// RenderOptions::progress (core/progress.h) is called with (pass, rows done, rows total): the
+// passes are "diffuse pass", "MODEL lobe pass", "ward grid pass" and "materialx ggx pass", each
+// reported after each of the calling thread's rows and once at its end. An exception it throws
+// stops the render (no new row starts; it is rethrown once the rows under way are done). What the
+// renderer caches (diffuse(), prepare()) is kept only once complete, so the next image is the one
+// a fresh renderer makes.
 
 struct RenderOptions {
   int threads = 0;  // 0: every hardware thread
