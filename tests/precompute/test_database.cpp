@@ -1,4 +1,3 @@
-#include <brdfnav/lookdev/database_env.h>
 #include <brdfnav/navigator/blend.h>
 #include <brdfnav/navigator/database_format.h>
 #include <brdfnav/navigator/image_input.h>
@@ -390,40 +389,6 @@ TEST(Database, RejectsAnImageFromAnotherEnvironment) {
   EXPECT_NE(error.find("images/ward/00003.exr: rendered under another environment"),
             std::string::npos)
       << error;
-}
-
-// Whatever renders against a database (validate's exact distances) must see the map its images
-// saw: a manifest whose map is now another file opens, but its map does not load.
-TEST(Database, LoadsItsEnvironmentMapOnlyAsTheImagesSawIt) {
-  EXPECT_EQ(load_database_env(Database::open(fixture().db)).pixel_sha1(),
-            fixture().env.pixel_sha1());
-  const fs::path dir = copy_of_reference("other_env");
-  // Not the default map, whichever that is.
-  const std::string other = std::string(kDefaultEnvPath).find("courtyard") == std::string::npos
-                                ? "/usr/share/blender/datafiles/studiolights/world/courtyard.exr"
-                                : "/usr/share/blender/datafiles/studiolights/world/sunset.exr";
-  replace_in_file(dir / "manifest.yaml", kDefaultEnvPath, other);
-  const Database db = Database::open(dir);
-  try {
-    load_database_env(db);
-    ADD_FAILURE() << "loaded a map the images were not rendered under";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), ErrorCode::database);
-    const std::string error = e.what();
-    EXPECT_NE(error.find(other + ": changed since the database was built"), std::string::npos)
-        << error;
-    EXPECT_NE(error.find((dir / "manifest.yaml").string()), std::string::npos) << error;
-  }
-  replace_in_file(dir / "manifest.yaml", other, "/nonexistent/map.exr");
-  try {
-    load_database_env(Database::open(dir));
-    ADD_FAILURE() << "loaded a missing map";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), ErrorCode::database);
-    const std::string error = e.what();
-    EXPECT_NE(error.find("/nonexistent/map.exr"), std::string::npos) << error;
-    EXPECT_NE(error.find((dir / "manifest.yaml").string() + " names"), std::string::npos) << error;
-  }
 }
 
 TEST(Database, RefusesToOverwriteAnExistingDirectory) {
