@@ -25,4 +25,18 @@ nlohmann::ordered_json neighbor_json(const Neighbor& n) {
           {"flags", flags},         {"material", material_json(n.material)}};
 }
 
+nlohmann::ordered_json provenance_json(const Database& db) {
+  const Manifest& m = db.manifest();
+  return {{"database", db.dir().string()},
+          {"manifest_sha1", db.manifest_sha1()},
+          {"profile", m.profile},
+          {"resolution", m.resolution},
+          {"scene", m.scene},
+          {"environment", {{"path", m.env_path}, {"pixel_sha1", m.env_pixel_sha1}}},
+          {"metric",
+           "cube-root RMS: sqrt(mean over the covered pixels and the RGB channels of "
+           "(cbrt(a) - cbrt(b))^2) between renderings under the environment, through the "
+           "database embedding"}};
+}
+
 }  // namespace brdfnav

@@ -2,17 +2,13 @@
 
 #include <brdfnav/core/atomic_file.h>
 #include <brdfnav/io/material_yaml.h>
+#include <brdfnav/navigator/navigation_json.h>
 
 #include <yaml-cpp/yaml.h>
 
 namespace brdfnav {
 
 namespace {
-
-constexpr const char* kMetric =
-    "cube-root RMS: sqrt(mean over the covered pixels and the RGB channels of "
-    "(cbrt(a) - cbrt(b))^2) between renderings under the environment, through the database "
-    "embedding";
 
 // `key:` followed by a material mapping without the schema key.
 void emit_material_entry(YAML::Emitter& out, const Material& m) {
@@ -33,20 +29,23 @@ std::string finish(const YAML::Emitter& out) {
   return std::string(out.c_str()) + "\n";
 }
 
-void emit_provenance(YAML::Emitter& out, const Database& db) {
-  const Manifest& m = db.manifest();
-  out << YAML::Key << "provenance" << YAML::Value << YAML::BeginMap;
-  out << YAML::Key << "database" << YAML::Value << YAML::DoubleQuoted << db.dir().string();
-  out << YAML::Key << "manifest_sha1" << YAML::Value << db.manifest_sha1();
-  out << YAML::Key << "profile" << YAML::Value << YAML::DoubleQuoted << m.profile;
-  out << YAML::Key << "resolution" << YAML::Value << m.resolution;
-  out << YAML::Key << "scene" << YAML::Value << YAML::DoubleQuoted << m.scene;
-  out << YAML::Key << "environment" << YAML::Value << YAML::BeginMap;
-  out << YAML::Key << "path" << YAML::Value << YAML::DoubleQuoted << m.env_path;
-  out << YAML::Key << "pixel_sha1" << YAML::Value << m.env_pixel_sha1;
-  out << YAML::EndMap;
-  out << YAML::Key << "metric" << YAML::Value << YAML::DoubleQuoted << kMetric;
-  out << YAML::EndMap;
+// A JSON value as YAML: objects as block mappings in their order, every string double-quoted
+// (a hexadecimal digest such as 1234E567... would otherwise read back as a number).
+void emit_json(YAML::Emitter& out, const nlohmann::ordered_json& value) {
+  if (value.is_object()) {
+    out << YAML::BeginMap;
+    for (const auto& item : value.items()) {
+      out << YAML::Key << item.key() << YAML::Value;
+      emit_json(out, item.value());
+    }
+    out << YAML::EndMap;
+  } else if (value.is_string()) {
+    out << YAML::DoubleQuoted << value.get<std::string>();
+  } else if (value.is_number_integer()) {
+    out << value.get<long long>();
+  } else {
+    throw MaterialError("navigation: no YAML form for the JSON value " + value.dump());
+  }
 }
 
 }  // namespace
@@ -78,7 +77,8 @@ std::string export_to_yaml(const Navigator& navigator, const Material& m) {
   YAML::Emitter out;
   out << YAML::BeginMap;
   emit_material(out, m, true);
-  emit_provenance(out, navigator.database());
+  out << YAML::Key << "provenance" << YAML::Value;
+  emit_json(out, provenance_json(navigator.database()));
   out << YAML::Key << "equivalents" << YAML::Value;
   if (equivalents.empty()) out << YAML::Flow;
   out << YAML::BeginMap;

@@ -238,15 +238,11 @@ json model_json(const ModelInfo& info, const ParamGrid& grid) {
   return {{"name", info.name}, {"title", info.title}, {"params", params}};
 }
 
+// The database's provenance, as an export writes it, and its number of embedding components.
 json database_json(const Database& db) {
-  const Manifest& m = db.manifest();
-  return {{"dir", db.dir().string()},
-          {"manifest_sha1", db.manifest_sha1()},
-          {"profile", m.profile},
-          {"resolution", m.resolution},
-          {"scene", m.scene},
-          {"environment", {{"path", m.env_path}, {"pixel_sha1", m.env_pixel_sha1}}},
-          {"components", m.components}};
+  json info = provenance_json(db);
+  info["components"] = db.manifest().components;
+  return info;
 }
 
 // The request's display and view, or the config's defaults; each checked against the config.

@@ -508,7 +508,7 @@ function changeRadius(steps) {
 function describeDatabase(info) {
   const db = info.database;
   const env = db.environment.path.split('/').pop();
-  return `Database ${db.dir}: profile ${db.profile}, ${db.resolution} px, ${db.scene}, ${env}` +
+  return `Database ${db.database}: profile ${db.profile}, ${db.resolution} px, ${db.scene}, ${env}` +
     ` \u00b7 ${info.colour_config}`;
 }
 
