@@ -1,6 +1,7 @@
 // `brdfnav serve`: the navigation interface of the paper (sections 3.3 and 4) as a page in the
 // browser, over the JSON API of serve_api.h (docs/SERVE.md). The page is embedded in the binary;
 // nothing is fetched from anywhere else.
+#include <brdfnav/serve/lightings.h>
 #include <brdfnav/serve/serve_api.h>
 #include <brdfnav/serve/serve_memory.h>
 #include <brdfnav/serve/web_assets.h>
@@ -35,7 +36,7 @@ constexpr int kServeThreads = 64;
 constexpr std::chrono::seconds kIdleRelease{10};
 
 struct ServeOptions {
-  std::string db;
+  std::vector<std::string> dbs;  // one per lighting, the first shown first
   std::string host = "127.0.0.1";
   int port = 8080;
   int resolution = 128;
@@ -60,7 +61,7 @@ const serve::WebAsset* find_asset(const std::string& path) {
   return nullptr;
 }
 
-void add_routes(httplib::Server& server, const serve::NavigatorApi& api, serve::IdleRelease& idle) {
+void add_routes(httplib::Server& server, const serve::LightingsApi& api, serve::IdleRelease& idle) {
   const auto handle = [&api, &idle](const httplib::Request& req, httplib::Response& res) {
     const serve::IdleRelease::Busy busy(idle);
     reply(req, res, api.handle({req.method, req.path, req.params, req.body}));
@@ -125,9 +126,9 @@ void add_error_handling(httplib::Server& server) {
 }
 
 // httplib serves each connection on one pool thread, which then waits up to the keep-alive
-// timeout (5 s) for the connection's next request: with its default 8 threads, a browser's 6
-// idle connections and a burst of requests kept others waiting 5 s each (a burst of 54 took
-// 18 s, 0.2 s with these threads). An idle thread costs next to nothing.
+// timeout for the connection's next request: with its default 8 threads, a browser's 6 idle
+// connections and a burst of requests kept others waiting a whole timeout each (docs/SERVE.md,
+// Memory). An idle thread costs next to nothing.
 void size_for_bursts(httplib::Server& server) {
   server.new_task_queue = [] { return new httplib::ThreadPool(kServeThreads); };
 }
@@ -217,8 +218,8 @@ void serve(const ServeOptions& o) {
   // are many already.
   OIIO::attribute("exr_threads", -1);
   Imf::setGlobalThreadCount(0);
-  // One heap per core for the 64 request threads: under 8 pages at once this kept the server
-  // at 411 MiB instead of 622 (docs/NAVIGATION.md), its final p95 within the run-to-run spread.
+  // One heap per core for the request threads, not glibc's eight: its slack would multiply
+  // (docs/SERVE.md, Memory).
   serve::limit_heap_arenas(std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
 
   // The port first: opening a database verifies every file's checksum (seconds for the default
@@ -228,17 +229,21 @@ void serve(const ServeOptions& o) {
   add_error_handling(server);
   size_for_bursts(server);
   const int port = bind(server, o);
-  std::unique_ptr<const serve::NavigatorApi> api;
-  with_context("--db", [&] {
-    api = std::make_unique<const serve::NavigatorApi>(serve::ApiOptions{o.db, o.resolution});
-  });
+  std::vector<serve::ApiOptions> databases;
+  for (const std::string& db : o.dbs) databases.push_back(serve::ApiOptions{db, o.resolution});
+  std::unique_ptr<const serve::LightingsApi> api;
+  with_context("--db", [&] { api = std::make_unique<const serve::LightingsApi>(databases); });
   serve::IdleRelease idle(kIdleRelease, [&api] { api->release_memory(); });
   add_routes(server, *api, idle);
-  warn_of_rendered_finals(api->navigator().database(), o.resolution);
+  for (std::size_t i = 0; i < api->size(); ++i)
+    warn_of_rendered_finals(api->api(i).navigator().database(), o.resolution);
   if (o.host != "127.0.0.1" && o.host != "localhost" && o.host != "::1")
     std::fprintf(stderr, "brdfnav: warning: --host %s: reachable from other machines\n",
                  o.host.c_str());
-  std::printf("brdfnav: navigator for %s at %s (Ctrl-C stops)\n", o.db.c_str(),
+  for (std::size_t i = 0; i < api->size(); ++i)
+    std::printf("brdfnav: lighting %s: %s\n", api->id(i).c_str(),
+                api->api(i).navigator().database().dir().c_str());
+  std::printf("brdfnav: navigator for %s at %s (Ctrl-C stops)\n", o.dbs.front().c_str(),
               url(o.host, port).c_str());
   std::fflush(stdout);
 
@@ -266,7 +271,10 @@ void add_serve_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "serve", "Serve the navigator in the browser: a material, its variations, one radius");
   auto o = std::make_shared<ServeOptions>();
-  cmd->add_option("--db", o->db, "Database directory (brdfnav precompute)")->required();
+  cmd->add_option("--db", o->dbs,
+                  "Database directory (brdfnav precompute); several, one per lighting, to switch "
+                  "between them on the page (the first is shown first)")
+      ->required();
   cmd->add_option("--port", o->port, "TCP port (0: any free port)")
       ->capture_default_str()
       ->check(CLI::Range(0, 65535));

@@ -62,13 +62,19 @@ struct ExactThumbnails::Impl {
     return slots[res];
   }
 
+  // The database's map, loaded on first use; call with source_mutex held.
+  const EnvMap& environment() {
+    if (!env) env.emplace(load_database_env(database));
+    return *env;
+  }
+
   // The slot's renderer, made on first use; call with the slot's mutex held.
   Renderer& ready_renderer(Slot& s, int res) {
     if (!s.renderer) {
       const Manifest& m = database.manifest();
       {
         const std::lock_guard lock(source_mutex);
-        if (!env) env.emplace(load_database_env(database));
+        environment();
         if (!scene) scene.emplace(Scene::load(m.scene));
       }
       RenderOptions options;
@@ -112,6 +118,11 @@ ExactThumbnails::ExactThumbnails(const Database& database, int resolution, std::
     : impl_(std::make_unique<Impl>(database, resolution, cache_images)) {}
 
 ExactThumbnails::~ExactThumbnails() = default;
+
+Image ExactThumbnails::environment_picture(int width) const {
+  const std::lock_guard lock(impl_->source_mutex);
+  return brdfnav::environment_picture(impl_->environment(), width);
+}
 
 int ExactThumbnails::resolution() const {
   return impl_->resolution;

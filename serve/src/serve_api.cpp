@@ -1,5 +1,7 @@
 #include <brdfnav/serve/serve_api.h>
 
+#include "api_request.h"
+
 #include <brdfnav/lookdev/export_formats.h>
 #include <brdfnav/serve/serve_memory.h>
 
@@ -27,121 +29,11 @@ namespace brdfnav::serve {
 
 namespace {
 
-using nlohmann::json;
-
 // The page's radius slider: its range and start, in the metric's units (cube-root RMS), from
 // where a step starts to show to about the distance between a matte and a glossy material. The
 // navigator itself takes radii down to kMinRadius (the embedding's noise).
 constexpr double kSliderMin = 0.002, kSliderMax = 0.2, kSliderStart = 0.03;
 constexpr int kMaxClusters = 32;
-
-// A request the API cannot answer: the client's mistake, its message starting with the field at
-// fault.
-Error request_error(const std::string& field, const std::string& what) {
-  return Error(ErrorCode::invalid_argument, field, what);
-}
-
-// Invalid UTF-8, which an uploaded file may carry into a message or a name, becomes U+FFFD
-// rather than an exception.
-std::string json_text(const json& value) {
-  return value.dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
-ApiResponse json_response(const json& body) {
-  return {200, "application/json", json_text(body)};
-}
-
-std::string join(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
-// Text as an error message quotes it: cut to 80 characters, so that a 64 KiB value, field name
-// or file name does not come back whole.
-std::string cut(std::string text) {
-  if (text.size() > 80) text = text.substr(0, 77) + "...";
-  return text;
-}
-
-// The request body as a JSON object with only the `allowed` keys.
-json parse_body(std::string_view body, const std::vector<std::string>& allowed) {
-  json request;
-  try {
-    request = json::parse(body);
-  } catch (const json::exception& e) {  // parse_error, and out_of_range for 1e999
-    throw request_error("body", std::string("malformed JSON: ") + e.what());
-  }
-  if (!request.is_object()) throw request_error("body", "expected a JSON object");
-  for (const auto& [key, value] : request.items())
-    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-      throw request_error(cut(key), "unknown field (expected one of: " + join(allowed) + ")");
-  return request;
-}
-
-// Whether `value` nests more than `levels` arrays or objects; looks no deeper than that, so a
-// hostile body cannot make this, or the recursive dump(), run out of stack.
-bool deeper_than(const json& value, int levels) {
-  if (!value.is_structured()) return false;
-  if (levels == 0) return true;
-  for (const json& child : value)
-    if (deeper_than(child, levels - 1)) return true;
-  return false;
-}
-
-// A value as an error message quotes it: cut, and not dumped at all when nested deeply.
-std::string shown(const json& value) {
-  if (deeper_than(value, 3)) return "a value nested too deeply";
-  return cut(json_text(value));
-}
-
-const json& require(const json& request, const std::string& field) {
-  const auto it = request.find(field);
-  if (it == request.end()) throw request_error(field, "missing");
-  return *it;
-}
-
-std::optional<std::string> optional_string(const json& request, const std::string& field) {
-  const auto it = request.find(field);
-  if (it == request.end()) return std::nullopt;
-  if (!it->is_string()) throw request_error(field, "expected a string, got " + shown(*it));
-  return it->get<std::string>();
-}
-
-// Every query needs the material's model in the database.
-Material check_held(const Database& db, Material m) {
-  if (!db.embedding(m.model))
-    throw request_error("material.model", "the database holds no model '" +
-                                              std::string(model_info(m.model).name) + "'");
-  return m;
-}
-
-// YAML limits an implicit key to 1024 characters of its text, quotes and escapes included;
-// yaml-cpp fails a longer one as a syntax error (a key of 1023 bytes is 1025 characters quoted,
-// a control character 6 escaped). Bytes are counted, which is stricter for UTF-8.
-constexpr std::size_t kMaxYamlKeyText = 1024;
-
-const std::string* overlong_key(const json& value) {
-  if (!value.is_structured()) return nullptr;
-  for (auto it = value.begin(); it != value.end(); ++it) {
-    if (value.is_object() && json(it.key()).dump().size() > kMaxYamlKeyText) return &it.key();
-    if (const std::string* key = overlong_key(*it)) return key;
-  }
-  return nullptr;
-}
-
-// JSON is YAML's flow syntax, so the material reader of the YAML files reads a JSON material
-// as it is, with the same checks and messages ("material:1: params.n: ..."), once it holds no
-// key too long for YAML (no material key is).
-Material read_material(const Database& db, const json& value) {
-  if (!value.is_object())
-    throw request_error("material", "expected an object, got " + shown(value));
-  if (deeper_than(value, 3)) throw request_error("material", "nested too deeply");
-  if (const std::string* key = overlong_key(value))
-    throw request_error("material", "unknown key of " + std::to_string(key->size()) + " bytes " +
-                                        shown(json(*key)));
-  return check_held(db, material_from_node(YAML::Load(value.dump()), "material", false));
-}
 
 double read_radius(const json& value) {
   if (!value.is_number()) throw request_error("radius", "expected a number, got " + shown(value));
@@ -263,25 +155,6 @@ std::pair<std::string, std::string> read_display_view(const ocio::ColorPipeline&
   return {display, view};
 }
 
-// 8-bit RGBA as a PNG file in memory: display_encode()'s, whose straight alpha is PNG's own
-// convention, so that a browser composites the sphere's edge over whatever lies behind.
-std::string encode_png(const std::vector<std::uint8_t>& rgba, int width, int height) {
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput proxy(bytes);
-  const char* name = "thumbnail.png";  // chooses the format; nothing is written to disk
-  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(name);
-  OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
-  // zlib's fastest level: at the default (6) deflating took a third of a loaded server's CPU
-  // (8 pages at once); level 1 makes a thumbnail 1.4 times the bytes (19 KB instead of 15 at
-  // 128 px).
-  spec.attribute("png:compressionLevel", 1);
-  if (!out || !out->set_ioproxy(&proxy) || !out->open(name, spec) ||
-      !out->write_image(OIIO::TypeDesc::UINT8, rgba.data()) || !out->close())
-    throw std::runtime_error("cannot encode the thumbnail as PNG: " +
-                             (out ? out->geterror() : OIIO::geterror()));
-  return std::string(bytes.begin(), bytes.end());
-}
-
 // The API's paths: /api/info is read with GET (httplib answers HEAD with the GET handler and
 // drops the body), the others take a body with POST.
 struct Route {
@@ -292,46 +165,11 @@ struct Route {
     return post ? method == "POST" : method == "GET" || method == "HEAD";
   }
 };
-constexpr Route kRoutes[] = {{"/api/info", false},
-                             {"/api/neighbors", true},
-                             {"/api/thumbnail", true},
-                             {"/api/export", true},
-                             {"/api/import", true}};
-
-// The HTTP status of an Error: the client's mistakes are 400, the server's failures 500.
-int http_status(ErrorCode code) {
-  switch (code) {
-    case ErrorCode::invalid_argument:
-    case ErrorCode::parse:
-      return 400;
-    case ErrorCode::io:
-    case ErrorCode::database:
-    case ErrorCode::internal:
-      return 500;
-  }
-  return 500;
-}
-
-// Runs `body`, answering an error with its status: http_status() of an Error, 409 for work of a
-// ring the page has left, 500 for anything else.
-template <typename Body>
-ApiResponse answer(Body&& body) {
-  try {
-    return body();
-  } catch (const Error& e) {
-    return error_response(http_status(e.code()), e.what());
-  } catch (const RingLeft& e) {
-    return error_response(409, e.what());
-  } catch (const std::exception& e) {
-    return error_response(500, e.what());
-  }
-}
+constexpr Route kRoutes[] = {{"/api/info", false},     {"/api/environment", false},
+                             {"/api/neighbors", true}, {"/api/thumbnail", true},
+                             {"/api/export", true},    {"/api/import", true}};
 
 }  // namespace
-
-ApiResponse error_response(int status, const std::string& message) {
-  return {status, "application/json", json_text({{"error", message}})};
-}
 
 NavigatorApi::NavigatorApi(const ApiOptions& options)
     : navigator_(Navigator::open(options.db)),
@@ -353,13 +191,14 @@ ApiResponse NavigatorApi::handle(const ApiRequest& r) const {
                                   [&](const Route& route) { return route.path == r.path; });
   const std::string request = cut(std::string(r.method) + " " + std::string(r.path));
   if (route == std::end(kRoutes)) return error_response(404, request + ": not found");
-  if (!route->takes(r.method)) {
-    ApiResponse refused = error_response(
-        405, request + ": method not allowed (allowed: " + std::string(route->allow()) + ")");
-    refused.headers.emplace_back("Allow", route->allow());
-    return refused;
-  }
+  if (!route->takes(r.method)) return method_not_allowed(r.method, r.path, route->allow());
   if (r.path == "/api/info") return info();
+  if (r.path == "/api/environment") {
+    json display_view = json::object();
+    for (const char* key : {"display", "view"})
+      if (const auto it = r.query.find(key); it != r.query.end()) display_view[key] = it->second;
+    return environment(display_view.dump());
+  }
   if (r.body.size() > kMaxBodyBytes)
     return error_response(400, "body: larger than " + std::to_string(kMaxBodyBytes) + " bytes");
   if (r.path == "/api/neighbors") return neighbors(r.body);
@@ -394,6 +233,16 @@ ApiResponse NavigatorApi::info() const {
          {"thumbnail_sizes", sizes_},
          {"max_body_bytes", kMaxBodyBytes},
          {"database", database_json(db)}});
+  });
+}
+
+ApiResponse NavigatorApi::environment(std::string_view body) const {
+  return answer([&] {
+    const json request = parse_body(body, {"display", "view"});
+    const auto [display, view] = read_display_view(color_, request);
+    const ocio::Thumbnail shown = display_encode(exact_.environment_picture(kEnvironmentPicture),
+                                                 false, color_, display, view);
+    return ApiResponse{200, "image/png", encode_png(shown.rgba, shown.width, shown.height)};
   });
 }
 

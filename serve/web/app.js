@@ -15,8 +15,10 @@ const THUMBNAIL_CACHE = 400;
 
 const $ = (selector) => document.querySelector(selector);
 const state = {
-  info: null,
-  history: [],  // the materials visited; `at` is the current one
+  info: null,        // GET /api/info of the current lighting
+  lightings: [],     // GET /api/lightings: one database per map
+  lighting: '',      // the current one's id, named in every API call
+  history: [],  // {material, lighting} visited; `at` is the current one
   at: -1,
   tab: 'gallery',
   radius: 0,
@@ -32,13 +34,19 @@ let ringFocus = false;
 
 // ---- the API ------------------------------------------------------------------------------
 
+// `path` with the lighting the call is for (the current one unless `lighting` is given).
+function apiPath(path, lighting = state.lighting) {
+  if (!lighting) return path;
+  return `${path}${path.includes('?') ? '&' : '?'}lighting=${encodeURIComponent(lighting)}`;
+}
+
 async function call(path, body, options = {}) {
   const init = { method: body === undefined ? 'GET' : 'POST', signal: options.signal };
   if (body !== undefined) {
     init.body = typeof body === 'string' ? body : JSON.stringify(body);
     init.headers = { 'Content-Type': options.type || 'application/json' };
   }
-  const response = await fetch(path, init);
+  const response = await fetch(apiPath(path, options.lighting), init);
   if (!response.ok) {
     const text = await response.text();
     let message = `${path}: HTTP ${response.status}`;
@@ -61,7 +69,7 @@ const ring = (gen) => ({ client: CLIENT, id: gen });
 // quick blend of the database's images that stands in while the exact one renders. `size`: one
 // of the server's thumbnail_sizes, its resolution by default.
 function thumbnail(material, gen, preview = false, size = undefined) {
-  const key = JSON.stringify([material, state.display, state.view, preview, size]);
+  const key = JSON.stringify([state.lighting, material, state.display, state.view, preview, size]);
   let entry = thumbnails.get(key);
   // Still on its way for a ring left since, which the server may drop: asked again for this one
   // (if it is being rendered, the server answers both from one render).
@@ -328,7 +336,18 @@ function showError(message) {
 // to tests when every image is on screen; the centre's sharp render comes after.
 async function redraw() {
   const gen = ++generation;
-  const material = state.history[state.at];
+  const { material, lighting } = state.history[state.at];
+  if (lighting !== state.lighting) {  // Back or Forward across a change of lighting
+    document.body.dataset.ready = 'false';
+    try {
+      await useLighting(lighting);
+    } catch (error) {
+      showError(error.message);
+      document.body.dataset.ready = 'true';
+      return;
+    }
+    if (gen !== generation) return;
+  }
   document.body.dataset.ready = 'false';
   $('#back').disabled = state.at <= 0;
   $('#forward').disabled = state.at >= state.history.length - 1;
@@ -388,8 +407,9 @@ async function redraw() {
 // Makes `material` the current one; the current one again (a load of the same file) adds no
 // history entry, which Back would seem to skip.
 function navigate(material) {
-  if (JSON.stringify(material) !== JSON.stringify(state.history[state.at])) {
-    state.history.splice(state.at + 1, Infinity, material);
+  const entry = { material, lighting: state.lighting };
+  if (JSON.stringify(entry) !== JSON.stringify(state.history[state.at])) {
+    state.history.splice(state.at + 1, Infinity, entry);
     state.at = state.history.length - 1;
   }
   redraw();
@@ -441,7 +461,7 @@ async function exportMaterial() {
   const button = $('#export');
   button.disabled = true;
   try {
-    const material = state.history[state.at];
+    const { material } = state.history[state.at];
     const format = $('#export-format').value;
     const text = await (await call('/api/export', { material, format })).text();
     const link = document.createElement('a');
@@ -505,6 +525,68 @@ function changeRadius(steps) {
 
 // ---- start ----------------------------------------------------------------------------------
 
+// ---- lighting: one database per map, the current material carried from one to another ----
+
+const lightingOf = (id) => state.lightings.find((l) => l.id === id);
+const environmentPicture = (id) => apiPath(`/api/environment?display=${
+  encodeURIComponent(state.display)}&view=${encodeURIComponent(state.view)}`, id);
+
+// The current lighting's name and picture, and a button for each of the others.
+function drawLightings() {
+  const current = lightingOf(state.lighting);
+  $('#lit-by img').src = environmentPicture(current.id);
+  $('#lit-by img').alt = `the map ${current.map}`;
+  $('#lit-by strong').textContent = current.map;
+  $('#lightings').hidden = state.lightings.length < 2;
+  $('#lightings').replaceChildren(...state.lightings.map((l) => {
+    const button = document.createElement('button');
+    Object.assign(button, { type: 'button', title: `Light every image by ${l.map} (${l.path}; ` +
+      `${l.profile} profile, ${l.resolution} px; models: ${l.models.join(', ')})` });
+    button.dataset.lighting = l.id;
+    button.setAttribute('aria-pressed', String(l.id === state.lighting));
+    const picture = new Image();
+    picture.src = environmentPicture(l.id);
+    picture.alt = '';
+    button.append(picture, l.map.replace(/\.[^.]*$/, ''));
+    button.addEventListener('click', () => switchLighting(l.id));
+    return button;
+  }));
+}
+
+// Makes `id` the current lighting: its database's models, grids and provenance.
+async function useLighting(id) {
+  const info = await (await call('/api/info', undefined, { lighting: id })).json();
+  state.lighting = id;
+  state.info = info;
+  $('#provenance').textContent = describeDatabase(info);
+  drawLightings();
+}
+
+// Moves to lighting `id` with the current material: the same parameters where its model is in
+// both databases, else its nearest material there (POST /api/carry).
+async function switchLighting(id) {
+  if (id === state.lighting) return;
+  document.body.dataset.ready = 'false';
+  try {
+    const { material } = state.history[state.at];
+    const answer = await (await call('/api/carry', { material, from: state.lighting },
+      { lighting: id })).json();
+    const before = modelInfo(material.model).title;
+    await useLighting(id);
+    if (answer.carried === 'nearest') {
+      notify(`${before} is not in the ${lightingOf(id).map} database: its nearest material ` +
+        `there is ${modelInfo(answer.material.model).title}`);
+    } else if (answer.carried === 'start') {
+      notify(`The ${lightingOf(id).map} database shares no model with the last one: its start ` +
+        'material is shown');
+    }
+    navigate(answer.material);
+  } catch (error) {
+    showError(`Lighting: ${error.message}`);
+    document.body.dataset.ready = 'true';
+  }
+}
+
 function describeDatabase(info) {
   const db = info.database;
   const env = db.environment.path.split('/').pop();
@@ -535,9 +617,14 @@ function wire() {
   $('#display').addEventListener('change', (event) => {
     state.display = event.target.value;
     fillViews();
+    drawLightings();
     redraw();
   });
-  $('#view').addEventListener('change', (event) => { state.view = event.target.value; redraw(); });
+  $('#view').addEventListener('change', (event) => {
+    state.view = event.target.value;
+    drawLightings();
+    redraw();
+  });
   $('#exact').addEventListener('change', (event) => { state.exact = event.target.checked; redraw(); });
   $('#export').addEventListener('click', exportMaterial);
   $('#load-file').addEventListener('change', (event) => {
@@ -551,6 +638,9 @@ function wire() {
 
 async function start() {
   try {
+    const lightings = await (await call('/api/lightings')).json();
+    state.lightings = lightings.lightings;
+    state.lighting = lightings.default;
     state.info = await (await call('/api/info')).json();
   } catch (error) {
     showError(`Cannot reach the navigator: ${error.message}`);
@@ -561,6 +651,7 @@ async function start() {
   [state.display] = state.info.displays.map((d) => d.name);
   wire();
   fillViews();
+  drawLightings();
   setRadius(positionOf(state.info.radius.start));
   navigate(state.info.start);
 }

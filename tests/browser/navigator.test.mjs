@@ -47,7 +47,12 @@ let shots = 0;
 // The URL the server prints once it listens.
 function startServer(db) {
   server = spawn(cli, ['serve', '--db', db, '--port', '0'], { stdio: ['ignore', 'pipe', 'pipe'] });
-  const log = fs.createWriteStream(path.join(artefacts, 'serve.log'));
+  return urlOf(server, 'serve.log');
+}
+
+// The URL a `brdfnav serve` process prints once it listens; its stderr goes to `logName`.
+function urlOf(server, logName) {
+  const log = fs.createWriteStream(path.join(artefacts, logName));
   server.stderr.pipe(log);
   return new Promise((resolve, reject) => {
     let out = '';
@@ -419,7 +424,7 @@ test('loading a YAML file starts from it, and a bad one is reported', async () =
 });
 
 test('a progress indicator shows while thumbnails take longer than 100 ms', async () => {
-  await page.route('**/api/thumbnail', async (route) => {
+  await page.route('**/api/thumbnail?*', async (route) => {
     await new Promise((resolve) => setTimeout(resolve, 600));
     await route.continue();
   });
@@ -475,7 +480,7 @@ test('quick clicks add one history entry, from the ring on screen', async () => 
     .filter((v) => JSON.stringify(v.material) !== JSON.stringify(before_));
   assert.ok(moves.length >= 2);
   // While the new variations load, the old ones cannot be clicked.
-  await page.route('**/api/neighbors', async (route) => {
+  await page.route('**/api/neighbors?*', async (route) => {
     await new Promise((resolve) => setTimeout(resolve, 300));
     await route.continue();
   });
@@ -504,7 +509,7 @@ test('quick clicks add one history entry, from the ring on screen', async () => 
 test('every query and thumbnail names its ring, so that the server drops the rings left', async () => {
   const rings = [];
   const record = (request) => {
-    if (!/\/api\/(neighbors|thumbnail)$/.test(request.url())) return;
+    if (!/\/api\/(neighbors|thumbnail)(\?|$)/.test(request.url())) return;
     rings.push({ path: new URL(request.url()).pathname, ...JSON.parse(request.postData()).ring });
   };
   page.on('request', record);
@@ -756,13 +761,63 @@ test('a burst of connections and idle keep-alive ones hold no request back', asy
   }
 });
 
-test('serve refuses a port in use and a missing database, naming the option', async () => {
+test('serve refuses a port in use, a missing database and one lighting twice, naming them', async () => {
   const { port } = new URL(url);
-  // Exit status 4: a file or socket that cannot be used; 5: a database that is not there.
+  // Exit status 4: a file or socket that cannot be used; 5: a database that is not there; 2: an
+  // argument that cannot be (the same map, profile and resolution twice).
+  const twice = new RegExp(`--db: ${db}: the same map, profile and resolution as ${db}`);
   for (const [args, error, status] of [[['--db', db, '--port', port], /--port: /, 4],
-    [['--db', path.join(tmp, 'none'), '--port', '0'], /--db: /, 5]]) {
+    [['--db', path.join(tmp, 'none'), '--port', '0'], /--db: /, 5],
+    [['--db', db, '--db', db, '--port', '0'], twice, 2]]) {
     // A serve that starts after all is killed after 20 s, and fails the check on its exit code.
     await assert.rejects(run(cli, ['serve', ...args], { timeout: 20000 }),
       (e) => e.code === status && error.test(e.stderr));
+  }
+});
+
+test('with a second lighting the page names each map, switches, and carries the material', async () => {
+  const courtyard = path.join(tmp, 'db-courtyard');
+  await run(cli, ['precompute', '--profile', 'smoke', '--out', courtyard, '--env',
+    '/usr/share/blender/datafiles/studiolights/world/courtyard.exr'], { maxBuffer: 64 << 20 });
+  const first = path.basename(YAML.parse(
+    fs.readFileSync(path.join(db, 'manifest.yaml'), 'utf8')).environment.path);
+  const both = spawn(cli, ['serve', '--db', db, '--db', courtyard, '--port', '0'],
+    { stdio: ['ignore', 'pipe', 'pipe'] });
+  const lit = await context.newPage();
+  try {
+    await lit.goto(await urlOf(both, 'serve-lightings.log'));
+    const ready = () => lit.waitForFunction(() => document.body.dataset.ready === 'true', null,
+      { timeout: 60000 });
+    await ready();
+    const litBy = () => lit.textContent('#lit-by strong');
+    assert.equal(await litBy(), first);
+    const buttons = lit.locator('#lightings button');
+    assert.equal(await buttons.count(), 2);
+    assert.equal(await buttons.nth(0).getAttribute('aria-pressed'), 'true');
+    // The map's picture, as the server drew it.
+    await lit.waitForFunction(() => {
+      const img = document.querySelector('#lit-by img');
+      return img.complete && img.naturalWidth > 0;
+    }, null, { timeout: 30000 });
+    assert.equal(await lit.evaluate(() => document.querySelector('#lit-by img').naturalWidth), 256);
+    const before = JSON.parse(await lit.locator('#centre').getAttribute('data-material'));
+    await lit.click('#lightings button[data-lighting=courtyard]');
+    await ready();
+    assert.equal(await litBy(), 'courtyard.exr');
+    assert.equal(await buttons.nth(1).getAttribute('aria-pressed'), 'true');
+    // Its model is in both databases: the same material, now lit by the other map.
+    assert.deepEqual(JSON.parse(await lit.locator('#centre').getAttribute('data-material')), before);
+    assert.match(await lit.textContent('#provenance'), /courtyard\.exr/);
+    await lit.screenshot({ path: path.join(artefacts, 'lightings.png'), fullPage: true });
+    // Back returns to the first lighting with the material seen under it.
+    await lit.click('#back');
+    await ready();
+    assert.equal(await litBy(), first);
+    assert.equal(await lit.textContent('#error'), '');
+  } finally {
+    await lit.close();
+    const exited = new Promise((resolve) => both.on('exit', resolve));
+    both.kill('SIGTERM');
+    assert.equal(await exited, 0, 'serve stops cleanly on SIGTERM');
   }
 });

@@ -39,6 +39,9 @@ class ExactThumbnails {
   std::shared_ptr<const Image> render(const Material& m) const;
   std::shared_ptr<const Image> render(const Material& m, int resolution,
                                       const std::function<void()>& check = {}) const;
+  // The map the renders are lit by, as a picture `width` wide for people (database_env.h,
+  // environment_picture()); loads the map as the first render would, with its errors.
+  Image environment_picture(int width) const;
   // Steps measured on these renders (Navigator::neighbors): the image metric's distance from
   // `current`'s render, at `resolution` (0: resolution()), which is rendered here, once. The
   // renders stay in the cache, so the thumbnails of the offers are ready once their steps are.

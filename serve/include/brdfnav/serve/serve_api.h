@@ -36,6 +36,9 @@ inline constexpr std::size_t kDrainedBodyBytes = 16 * kMaxBodyBytes;
 // of high pixel density (the page's centre: 256 CSS pixels, 512 device pixels at a ratio of 2).
 inline constexpr int kSharpThumbnailSizes[] = {256, 512};
 
+// The width of the picture of the database's map (GET /api/environment).
+inline constexpr int kEnvironmentPicture = 256;
+
 struct ApiResponse {
   int status = 200;
   std::string content_type;
@@ -82,6 +85,11 @@ class NavigatorApi {
   // GET /api/info: models and parameter tables, tabs, displays and views, radius range, the
   // start material and the database's provenance.
   ApiResponse info() const;
+  // GET /api/environment[?display=D&view=V] -> image/png: the database's map, lat-long,
+  // kEnvironmentPicture wide, exposed to a mean of mid grey (lookdev::ExactThumbnails::
+  // environment_picture), through the display and view (the config's defaults when absent).
+  // `body`: {display, view}, both optional. 500 naming the map when it no longer loads.
+  ApiResponse environment(std::string_view body) const;
   // POST /api/neighbors {material, radius, tab[, k, exact, ring]} -> {neighbors: [{tab, label,
   // distance, flags, material}]}. With exact: true each offer moves until its final image
   // (lookdev::FinalImages: the render, or the blend where the database vouches for it) is at

@@ -55,8 +55,8 @@ void trim_heap();
 
 // Lets the allocator keep at most `arenas` heaps for the process's threads (glibc's
 // M_ARENA_MAX, whose default is 8 per core; nothing with another C library). Call before the
-// threads start. Each arena keeps the slack of what its threads freed: with the default 16 on 2
-// cores, 8 pages at once left a server 467 MB of heap for 195 MB in use; with 2, 270 MB.
+// threads start. Each arena keeps the slack of what its threads freed, so that many arenas
+// multiply it (measured in docs/SERVE.md, Memory).
 // Whether the allocator took the limit.
 bool limit_heap_arenas(int arenas);
 
