@@ -13,9 +13,8 @@ namespace {
 
 constexpr std::size_t kChunk = 128;  // nodes whose factors are computed together
 // Nodes (and pieces of texels) may be this many times wider than the per-lobe quadrature's at the
-// same RenderQuality: their spread counts to second order (emit()). The six Ward settings of the
-// benchmark at 32 x 32 had accuracy ratios of 0.001-0.007 at 1, 0.001-0.017 at 2 and 0.003-0.032
-// at 2.5; the grid took 105 ms per image at 2 and 76 ms at 2.5 at 128 x 128 (docs/RENDERER.md).
+// same RenderQuality: their spread counts to second order (emit()). The accuracy ratios and
+// times that chose the factor are in docs/RENDERER.md (the quadrature, point 9).
 constexpr double kSpreadRelief = 2.5;
 // A few points bound a curved node only roughly: this share of its box's size is allowed for its
 // bulge toward the peak.

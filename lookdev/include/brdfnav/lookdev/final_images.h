@@ -1,5 +1,5 @@
 // The images the navigator shows as final, and the steps measured on them (docs/NAVIGATION.md,
-// "Final images"). An exact render costs 0.1 to 3 s at 128 px on 2 cores; the blend of the
+// "Final images", with what each costs). An exact render costs seconds; the blend of the
 // database's images (Thumbnails) costs milliseconds and is, in most of each grid, as close to the
 // exact render as two renders of one material at different qualities. The database's blend check
 // (Database::blend_error()) says where: per cell, the blend's distance from an exact render at

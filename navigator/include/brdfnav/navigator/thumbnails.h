@@ -24,7 +24,8 @@ namespace brdfnav {
 class Thumbnails {
  public:
   // 64 MiB: 256 database images at 128 x 128, more than the nodes a tab's 10 He thumbnails blend
-  // (64 each, mostly shared), against the 240 MiB of every image of a default database.
+  // (64 each, mostly shared); a default database's images are several times that. Its effect on
+  // memory and speed: docs/NAVIGATION.md, Speed and memory.
   static constexpr std::size_t kDefaultCacheBytes = std::size_t{64} << 20;
 
   // `resolution` 0: the database's own. The database must outlive this object. The images read

@@ -17,8 +17,8 @@ enum class ExrPixels {
   // 32-bit floats, zip-compressed: `brdfnav render`'s output, every bit of the render kept.
   float_zip,
   // 16-bit halves, uncompressed: a database's images. The navigator reads them whenever a
-  // thumbnail needs a node it has not cached (a He thumbnail blends 64); at 128 px one takes
-  // about 0.25 ms to read instead of 3.3 ms as zip-compressed floats, on the same disk space.
+  // thumbnail needs a node it has not cached (a He thumbnail blends 64): a tenth of the time
+  // zip-compressed floats take, on the same disk space (docs/NAVIGATION.md, Speed and memory).
   // A half keeps 11 significant bits: 1/4096 relative, about 1/12,000 after the metric's cube
   // root, far below any distance the navigator tells apart.
   half_raw,
