@@ -1,5 +1,8 @@
 #include "ring.h"
 
+#include <brdfnav/core/cielab.h>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -8,11 +11,23 @@ namespace brdfnav::nav {
 
 namespace {
 
-// CIELAB hue angles of the colour tabs' "ab+<degrees>" directions, in words: 0 is +a* (red), 90
-// +b* (yellow), 180 -a* (green), 270 -b* (blue).
-constexpr std::array<const char*, 8> kHueWords{"towards red",  "towards orange", "towards yellow",
-                                               "towards lime", "towards green",  "towards teal",
-                                               "towards blue", "towards purple"};
+// The colour tabs' "ab+<degrees>" directions in words: each word with a colour it names (sRGB as
+// a colour picker gives it). CIELAB's hue angle is not the colour wheel's: +a* (0 degrees) looks
+// pink, red sits at 40, green at 136, and the blues crowd between 250 and 310.
+constexpr std::array<HueWord, 8> kHueWords{{{"towards pink", {1.0, 0.4, 0.7}},
+                                            {"towards red", {1.0, 0.0, 0.0}},
+                                            {"towards gold", {1.0, 0.84, 0.0}},
+                                            {"towards green", {0.0, 0.8, 0.0}},
+                                            {"towards teal", {0.0, 0.5, 0.5}},
+                                            {"towards cerulean", {0.0, 0.6, 0.8}},
+                                            {"towards blue", {0.0, 0.5, 1.0}},
+                                            {"towards violet", {0.5, 0.0, 1.0}}}};
+
+// The smallest angle between two hue angles, in degrees.
+double hue_gap(double a, double b) {
+  const double d = std::fmod(std::abs(a - b), 360.0);
+  return std::min(d, 360 - d);
+}
 
 std::string number(double v) {
   char text[32];
@@ -41,12 +56,34 @@ std::string lobe_words(const Neighbor& n) {
 std::string color_words(const Neighbor& n) {
   if (n.label == "L+") return "lighter";
   if (n.label == "L-") return "darker";
-  if (n.label.rfind("ab+", 0) == 0) {
-    const int degrees = std::stoi(n.label.substr(3));
-    return kHueWords[static_cast<std::size_t>(((degrees % 360) + 360) % 360 / 45)];
-  }
+  if (n.label.rfind("ab+", 0) == 0) return hue_word(std::stoi(n.label.substr(3)));
   return n.label;
 }
+
+}  // namespace
+
+double hue_angle(const HueWord& word) {
+  const auto decode = [](double c) {  // the sRGB transfer function, to linear
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  const Vec3 lab =
+      lab_from_rec709(Rgb(decode(word.srgb[0]), decode(word.srgb[1]), decode(word.srgb[2])));
+  const double degrees = std::atan2(lab[2], lab[1]) * 180 / kPi;
+  return degrees < 0 ? degrees + 360 : degrees;
+}
+
+std::span<const HueWord> hue_words() {
+  return kHueWords;
+}
+
+std::string hue_word(double degrees) {
+  const HueWord* nearest = &kHueWords.front();
+  for (const HueWord& w : kHueWords)
+    if (hue_gap(hue_angle(w), degrees) < hue_gap(hue_angle(*nearest), degrees)) nearest = &w;
+  return nearest->words;
+}
+
+namespace {
 
 std::string words(const Neighbor& n) {
   switch (n.tab) {

@@ -18,6 +18,7 @@
 #include "color.h"
 #include "ring.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -208,6 +209,26 @@ TEST(Navigator, CielabOfReferenceColors) {
   EXPECT_LT((rec709_from_lab(lab_from_rec709(color)) - color).abs().maxCoeff(), 1e-12);
 }
 
+// The colour tabs' hue words say what the picture shows: each of the eight directions is named
+// by a colour whose CIELAB hue is within 30 degrees of it (the "ab+0" offer is pink, not red),
+// and no two directions share their words.
+TEST(Navigator, HueWordsNameAColourOfTheirDirection) {
+  std::set<std::string> said;
+  for (int degrees = 0; degrees < 360; degrees += 45) {
+    const std::string words = nav::hue_word(degrees);
+    said.insert(words);
+    const auto word = std::find_if(nav::hue_words().begin(), nav::hue_words().end(),
+                                   [&](const nav::HueWord& w) { return words == w.words; });
+    ASSERT_NE(word, nav::hue_words().end()) << words;
+    const double gap = std::abs(std::remainder(nav::hue_angle(*word) - degrees, 360.0));
+    EXPECT_LE(gap, 30) << degrees << " degrees: " << words << " at " << nav::hue_angle(*word);
+  }
+  EXPECT_EQ(said.size(), 8u);
+  EXPECT_EQ(nav::hue_word(0), "towards pink");
+  EXPECT_EQ(nav::hue_word(45), "towards red");
+  EXPECT_EQ(nav::hue_word(135), "towards green");
+}
+
 // Colour neighbours: at eps and valid, or clamped at the edge of the valid range (inside the
 // sphere); L+ brighter, L- darker, the a-b ones at their hue and at the current L.
 void expect_color_tab(const Case& c, Tab tab) {
@@ -219,15 +240,12 @@ void expect_color_tab(const Case& c, Tab tab) {
   ASSERT_EQ(out.size(), 10u);
   expect_ring(out);
   const std::map<std::string, Neighbor> found = by_label(out);
-  const char* words[] = {"lighter",        "darker",        "towards red",   "towards orange",
-                         "towards yellow", "towards lime",  "towards green", "towards teal",
-                         "towards blue",   "towards purple"};
   for (std::size_t i = 0; i < out.size(); ++i) {
     const std::string label =
         i < 2 ? (i == 0 ? "L+" : "L-") : "ab+" + std::to_string(45 * static_cast<int>(i - 2));
     ASSERT_TRUE(found.contains(label)) << label;
     const Neighbor& n = found.at(label);
-    EXPECT_EQ(n.words, words[i]);
+    EXPECT_EQ(n.words, i < 2 ? (i == 0 ? "lighter" : "darker") : nav::hue_word(45.0 * (i - 2)));
     const Rgb& after = diffuse ? n.material.rho_d : n.material.rho_s;
     EXPECT_TRUE((after >= 0).all() && (after <= max).all()) << n.label;
     EXPECT_FALSE(n.at_boundary);
