@@ -41,7 +41,7 @@ std::string json_text(const json& value) {
 }
 
 ApiResponse json_response(const json& body) {
-  return {200, "application/json", json_text(body)};
+  return {200, "application/json", json_text(body), {}};
 }
 
 std::string join(const std::vector<std::string>& names) {
@@ -165,7 +165,7 @@ int http_status(ErrorCode code) {
 }
 
 ApiResponse error_response(int status, const std::string& message) {
-  return {status, "application/json", json_text({{"error", message}})};
+  return {status, "application/json", json_text({{"error", message}}), {}};
 }
 
 }  // namespace brdfnav::serve

@@ -242,7 +242,7 @@ ApiResponse NavigatorApi::environment(std::string_view body) const {
     const auto [display, view] = read_display_view(color_, request);
     const ocio::Thumbnail shown = display_encode(exact_.environment_picture(kEnvironmentPicture),
                                                  false, color_, display, view);
-    return ApiResponse{200, "image/png", encode_png(shown.rgba, shown.width, shown.height)};
+    return ApiResponse{200, "image/png", encode_png(shown.rgba, shown.width, shown.height), {}};
   });
 }
 
@@ -305,8 +305,10 @@ ApiResponse NavigatorApi::export_material(std::string_view body) const {
     // the database's resolution, at most kExportResolution, so that the button answers in
     // seconds.
     const int resolution = std::min(navigator_.database().manifest().resolution, kExportResolution);
-    return ApiResponse{200, std::string(lookdev::export_content_type(format)),
-                       lookdev::export_document(navigator_, m, format, resolution)};
+    return ApiResponse{200,
+                       std::string(lookdev::export_content_type(format)),
+                       lookdev::export_document(navigator_, m, format, resolution),
+                       {}};
   });
 }
 
