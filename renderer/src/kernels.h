@@ -72,6 +72,10 @@ struct KernelShape {
   std::optional<Slopes> slopes = std::nullopt;
   // The part of the lobe this shape covers (SlopeWeight), or all of it.
   std::optional<SlopeWeight> part = std::nullopt;
+  // For a lobe over slopes whose kernel is smooth at the scale of the distance from its peak (a
+  // heavy tail, GGX's), 0 otherwise: a node rho deviations of `slopes` from the peak may be
+  // max(1, node_growth * rho) times as wide as node_width, the finest nodes only around the peak.
+  double node_growth = 0;
 
   static KernelShape isotropic(const Vec3& peak, double width);
   KernelShape to_world(const Frame& frame) const {
@@ -82,7 +86,8 @@ struct KernelShape {
                   node_width,
                   channel_scale,
                   slopes,
-                  part};
+                  part,
+                  node_growth};
     if (s.slopes) s.slopes->frame = frame;
     return s;
   }
