@@ -114,6 +114,10 @@ class EnvPyramid {
     const Level& l = levels_[level];
     return rgb(l.power, l.index(x, y));
   }
+  Rgb weight(int level, int x, int y) const {
+    const Level& l = levels_[level];
+    return rgb(l.weight, l.index(x, y));
+  }
   struct HotTexel {
     int x, y;      // level-0 coordinates
     Rgb radiance;  // of the original map

@@ -95,45 +95,33 @@ KernelShape shape(const He& l, const Vec3& wo) {
   return s;
 }
 
-// GGX's D cos_h mass beyond slope t is alpha^2 / (alpha^2 + t^2) (isotropic): one window of
-// `reach` (3.5) deviations of its core leaves a third of the lobe outside, and one that reaches
-// far enough, with the core's fine nodes all the way out, exceeds the node budget of smooth lobes.
-// It is integrated in two parts instead (SlopeWeight), which sum to the lobe:
-// - the core, the lobe times exp(-(slope / (kGgxCore alpha))^2), with nodes for the lobe's peak
-//   (alpha / sqrt(2)) over a window of kGgxCoreWindow alpha deviations (7 alpha at the default
-//   reach, beyond which the core holds 0.1% of the lobe);
-// - the tail, the lobe times one minus that Gaussian: zero at the peak and smooth at the scale of
-//   kGgxCore alpha, with nodes 3 alpha wide over a window that reaches slope kGgxReach alpha at
-//   the default reach; the 1 / (1 + kGgxReach^2) of the lobe beyond (0.06%) is left out.
-// With a window to 6 alpha and no split, the accuracy ratios were 0.3-0.6 (the reference reaches
-// farther). The widths were chosen by the ratios and the time of the settings at 32 x 32 and
-// 96 x 96 (docs/EXTENDING.md, section 3).
-constexpr double kGgxCore = 4, kGgxCoreWindow = 2, kGgxReach = 40, kDefaultReach = 3.5;
+// GGX's D cos_h mass beyond slope t is alpha^2 / (alpha^2 + t^2) (isotropic): a window of
+// `reach` (3.5) deviations of its peak leaves a third of the lobe outside. Its window reaches
+// slope kGgxReach alpha at the default reach instead, leaving out 1 / (1 + kGgxReach^2) of the
+// lobe (0.01%), with nodes for the peak (alpha / sqrt(2)) around it that grow with their distance
+// from it (KernelShape::node_growth): beyond the peak D falls like slope^-4, smooth at the scale
+// of that distance, so a node there may be kGgxGrowth times its distance in slopes from the peak
+// (before texels_per_width). The peak's nodes all the way out exceeded the node budget of smooth
+// lobes, and a window to 6 alpha had accuracy ratios of 0.3-0.6. The smooth setting's ratio
+// (alpha_x) at 128 x 128 under forest.exr: with a window to 40 alpha, 0.098-0.100 at growth
+// 0.2-0.3, 0.107 at 0.4, 0.130 at 0.5; to 100 alpha, 0.055 at 0.3 and 0.072 at 0.4, which takes
+// a third fewer of the smooth lobe's nodes (docs/RENDERER.md, point 10).
+constexpr double kGgxReach = 100, kGgxGrowth = 0.4, kDefaultReach = 3.5;
 
-// One shape, the whole lobe, for the lobes with light tails.
-template <typename L>
-std::vector<KernelShape> shapes(const L& l, const Vec3& wo) {
-  return {shape(l, wo)};
-}
-
-std::vector<KernelShape> shapes(const Ggx& l, const Vec3& wo) {
-  const double ax = l.alpha_x, ay = l.alpha_y;
-  auto part = [&](double sx, double sy, double node, bool tail) {
-    KernelShape s = half_vector_shape(wo, sx, sy);
-    s.node_width = half_vector_shape(wo, node * ax, node * ay).node_width;
-    s.slopes = KernelShape::Slopes{Frame{}, wo, sx, sy};
-    s.part = SlopeWeight{1 / (kGgxCore * ax), 1 / (kGgxCore * ay), tail};
-    return s;
-  };
-  const double tail = kGgxReach / kDefaultReach;
-  return {part(kGgxCoreWindow * ax, kGgxCoreWindow * ay, 1 / std::sqrt(2.0), false),
-          part(tail * ax, tail * ay, 0.75 * kGgxCore, true)};
+KernelShape shape(const Ggx& l, const Vec3& wo) {
+  const double ax = l.alpha_x, ay = l.alpha_y, window = kGgxReach / kDefaultReach;
+  const double node = 1 / std::sqrt(2.0);
+  KernelShape s = half_vector_shape(wo, window * ax, window * ay);
+  s.node_width = half_vector_shape(wo, node * ax, node * ay).node_width;
+  s.slopes = KernelShape::Slopes{Frame{}, wo, window * ax, window * ay};
+  s.node_growth = kGgxGrowth * window / node;  // per deviation of the window
+  return s;
 }
 
 }  // namespace
 
-std::vector<KernelShape> lobe_shapes(const Lobe& lobe, const Vec3& wo) {
-  return std::visit([&](const auto& l) { return shapes(l, wo); }, lobe);
+KernelShape lobe_shape(const Lobe& lobe, const Vec3& wo) {
+  return std::visit([&](const auto& l) { return shape(l, wo); }, lobe);
 }
 
 }  // namespace brdfnav

@@ -16,37 +16,6 @@
 
 namespace brdfnav {
 
-// A weight on the half vector's slopes (h.x / h.z, h.y / h.z) in the lobe's frame, the Gaussian
-// g = exp(-(sx * inv_cx)^2 - (sy * inv_cy)^2), or 1 - g for the `tail`. A lobe whose tail falls
-// too slowly for one window (GGX's density ~ slope^-4) is integrated in two parts, the lobe times
-// g (its core: fine nodes, a narrow window) and the lobe times 1 - g (its tail: zero at the peak,
-// smooth at the scale of 1 / inv_c, so coarse nodes over a wide window); they sum to the lobe.
-struct SlopeWeight {
-  double inv_cx, inv_cy;
-  bool tail;
-  // At the unnormalised half vector h = wi + wo (local, h.z > 0).
-  double at(const Vec3& h) const {
-    const double x = h.x() * inv_cx / h.z(), y = h.y() * inv_cy / h.z();
-    const double g = std::exp(-(x * x + y * y));
-    return tail ? 1 - g : g;
-  }
-  // `out` times at() of the n half vectors wi + wo, wi given as columns x, y, z (local); with
-  // `exp_in_place` for the exponentials (vector_exp.h). NaN where z + wo.z is 0.
-  template <typename A, typename Exp>
-  void scale(const Eigen::ArrayBase<A>& x, const Eigen::ArrayBase<A>& y,
-             const Eigen::ArrayBase<A>& z, const Vec3& wo, Eigen::Ref<Eigen::ArrayXd> out,
-             Exp&& exp_in_place) const {
-    thread_local Eigen::ArrayXd g;
-    const auto inv_hz = (z + wo.z()).inverse();
-    g = -(((x + wo.x()) * inv_hz * inv_cx).square() + ((y + wo.y()) * inv_hz * inv_cy).square());
-    exp_in_place(g);
-    if (tail)
-      out *= 1 - g;
-    else
-      out *= g;
-  }
-};
-
 // Where a kernel is large: around `peak` (unit), roughly a Gaussian with angular standard
 // deviation `major_width` along the tangent `major` and `minor_width` across it, in its narrowest
 // channel; channel c is `channel_scale[c]` (>= 1) times wider. `node_width` (<= minor_width)
@@ -70,8 +39,10 @@ struct KernelShape {
     double sx, sy;
   };
   std::optional<Slopes> slopes = std::nullopt;
-  // The part of the lobe this shape covers (SlopeWeight), or all of it.
-  std::optional<SlopeWeight> part = std::nullopt;
+  // For a lobe over slopes whose kernel is smooth at the scale of the distance from its peak (a
+  // heavy tail, GGX's), 0 otherwise: a node rho deviations of `slopes` from the peak may be
+  // max(1, node_growth * rho) times as wide as node_width, the finest nodes only around the peak.
+  double node_growth = 0;
 
   static KernelShape isotropic(const Vec3& peak, double width);
   KernelShape to_world(const Frame& frame) const {
@@ -82,7 +53,7 @@ struct KernelShape {
                   node_width,
                   channel_scale,
                   slopes,
-                  part};
+                  node_growth};
     if (s.slopes) s.slopes->frame = frame;
     return s;
   }
@@ -141,22 +112,25 @@ auto bind_wo(const L& lobe, const Vec3& wo) {
     return AtWo<L>{lobe, wo};
 }
 
-// rho_s = 1 lobe of a closure times the cosine, in the frame of one pixel, or the `part` of it
-// (KernelShape::part): a double for grey lobes, an Rgb otherwise.
+// rho_s = 1 lobe of a closure times the cosine, in the frame of one pixel: a double for grey
+// lobes, an Rgb otherwise.
 template <typename L>
 struct LobeKernel {
   using Value = std::conditional_t<GreyLobe<L>, double, Rgb>;
   using Bound = decltype(bind_wo(std::declval<const L&>(), Vec3()));
-  LobeKernel(const L& lobe, const Frame& frame, const Vec3& wo,
-             const std::optional<SlopeWeight>& part = std::nullopt)
-      : lobe(bind_wo(lobe, wo)), frame(frame), wo(wo), part(part) {}
+  LobeKernel(const L& lobe, const Frame& frame, const Vec3& wo)
+      : lobe(bind_wo(lobe, wo)), frame(frame) {}
 
   Value value(const Vec3& wi_world) const { return value_local(frame.to_local(wi_world)); }
   // ... at wi in the pixel's frame (the frame of the lobe's KernelShape::Slopes).
   Value value_local(const Vec3& wi) const {
     if (wi.z() <= 0) return zero<Value>();
-    const Value whole = whole_local(wi);
-    return part ? Value(whole * part->at(wi + wo)) : whole;
+    if constexpr (requires { lobe.eval_cos(wi); })
+      return lobe.eval_cos(wi);
+    else if constexpr (GreyLobe<L>)
+      return lobe.eval(wi)[0] * wi.z();
+    else
+      return lobe.eval(wi) * wi.z();
   }
   // value_local() at n local directions at once, stored as x[0..n), y = x + n, z = x + 2n, for
   // lobes that take arrays (Ward's): K is then 0 or NaN below the horizon (Quadrature checks).
@@ -169,23 +143,11 @@ struct LobeKernel {
     using Column = Eigen::Map<const Eigen::ArrayXd>;
     const Column cx(x, n), cy(x + n, n), cz(x + 2 * n, n);
     lobe.eval_cos(cx, cy, cz, Eigen::Map<Eigen::ArrayXd>(out, n), exp_in_place);
-    if (part) part->scale(cx, cy, cz, wo, Eigen::Map<Eigen::ArrayXd>(out, n), exp_in_place);
   }
 
  private:
-  Value whole_local(const Vec3& wi) const {
-    if constexpr (requires { lobe.eval_cos(wi); })
-      return lobe.eval_cos(wi);
-    else if constexpr (GreyLobe<L>)
-      return lobe.eval(wi)[0] * wi.z();
-    else
-      return lobe.eval(wi) * wi.z();
-  }
-
   Bound lobe;
   Frame frame;
-  Vec3 wo;
-  std::optional<SlopeWeight> part;
 };
 
 // The parameter of the lobes that a batch rendered together varies: the one the Fresnel factor
@@ -248,8 +210,7 @@ struct MirrorKernel {
   }
 };
 
-// Shape of the rho_s = 1 lobe of each model seen from `wo`, in the local frame: one shape, or
-// the shapes of the parts it is integrated in (KernelShape::part), whose integrals sum to it.
-std::vector<KernelShape> lobe_shapes(const Lobe& lobe, const Vec3& wo);
+// Shape of the rho_s = 1 lobe of each model seen from `wo`, in the local frame.
+KernelShape lobe_shape(const Lobe& lobe, const Vec3& wo);
 
 }  // namespace brdfnav

@@ -4,7 +4,9 @@
 // The grid is the coarsest pyramid level whose nodes are at most 1 / texels_per_width of the
 // kernel's narrowest width, or level 0 with every texel cut into equal pieces for kernels
 // narrower than that. The window is the ellipse of `reach` widths around the kernel's peak, or
-// of `reach` deviations in the half vector's slopes (Ward), enumerated as row segments.
+// of `reach` deviations in the half vector's slopes (Ward), enumerated as row segments. A heavy
+// tail's (GGX's) nodes grow with their distance from the peak instead: the window's nodes are
+// taken from coarser levels where the kernel is smooth at a larger scale (grown_window_sum()).
 // Luminance-weighted centroids make the midpoint rule exact to first order; the second order is
 // corrected with the grid's own second differences of K (the corrected midpoint rule,
 // + (K_left + K_right + K_up + K_down - 4 K) / 24 per node), which summation by parts moves onto
@@ -20,7 +22,9 @@
 
 #include <brdfnav/renderer/render.h>
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -82,6 +86,15 @@ class Quadrature {
     // what is smooth at the scale of a node.
     const double wanted_step =
         std::min(shape.node_width / quality.texels_per_width, quality.max_node);
+    // Nodes that grow with their distance from the peak: the window is enumerated at the
+    // coarsest level its farthest nodes may have, each node refined while too wide for where it
+    // is (grown_window_sum()).
+    double top_step = wanted_step;
+    if constexpr (kAtOnce)
+      if (slopes_ && shape.node_growth > 0)
+        top_step =
+            std::min(quality.max_node, wanted_step * std::max(1.0, shape.node_growth * reach_));
+    if (top_step >= 2 * wanted_step && env.level_count() <= kMaxLevels) growth_ = shape.node_growth;
     peak_theta_ = std::acos(std::clamp(peak_.y(), -1.0, 1.0));
     // Not a slope window over kMaxEllipseAspect times as long as wide either: ellipse_spans()
     // outlines it with kOutline points and widens it by the margin in its narrow deviations,
@@ -92,16 +105,26 @@ class Quadrature {
                                             kMaxEllipseAspect * std::min(slopes_->sx, slopes_->sy));
     // A slope window too long for ellipse_spans() is a polygon, which costs about as much as
     // kPolygonCost nodes: not worth it for a small cap.
-    if (slopes_ && !ellipse_ && cap_area(extent_) > kPolygonCost * wanted_step * wanted_step)
+    if (slopes_ && !ellipse_ && cap_area(extent_) > kPolygonCost * top_step * top_step)
       slope_polygon();
-    const double step = coarsened_step(wanted_step, quality);
-    level_ = env.coarsest_level(step);
     auto pieces_for = [&](double piece) {
       return std::clamp(static_cast<int>(std::ceil(env.node_angle(0) / piece)), 1,
                         quality.max_split);
     };
-    split_ = level_ > 0 ? 1 : pieces_for(step);
+    if (growth_ > 0) {
+      base_step_ = wanted_step;
+      base_level_ = env.coarsest_level(wanted_step);
+      base_split_ = base_level_ > 0 ? 1 : pieces_for(wanted_step);
+      level_ = env.coarsest_level(top_step);
+      split_ = 1;
+      grow_levels();
+    } else {
+      const double step = coarsened_step(wanted_step, quality);
+      level_ = env.coarsest_level(step);
+      split_ = level_ > 0 ? 1 : pieces_for(step);
+    }
     const double hot_step = shape.node_width / quality.hot_texels_per_width;
+    hot_step_ = hot_step;
     hot_split_ = pieces_for(hot_step);
     // Hot texels merge into nodes half the size of the pieces the lobe would cut them into: at
     // the pieces' own size, Blinn-Phong n = 300's accuracy ratio rose from 0.030 to 0.034.
@@ -258,7 +281,7 @@ class Quadrature {
     s.segments.clear();
     if (!ellipse_spans(margin, s) && !slope_spans(margin, s)) cap_spans(margin, s.segments);
     if constexpr (kAtOnce)
-      if (slopes_) return slope_window_sum(s, margin);
+      if (slopes_) return growth_ > 0 ? grown_window_sum(s) : slope_window_sum(s, margin);
     Sum sum = zero<Sum>();
     for_each_node(s, [&](const Vec3& centroid, const Rgb& weight) {
       Value k;
@@ -342,6 +365,112 @@ class Quadrature {
         total += weighted(s.weight[i], k[i]);
     }
     sum = total;
+  }
+
+  // The local direction w, or the half vector's slopes to wo scaled to deviations and its
+  // height: the node is rho = sqrt(u^2 + v^2) / hz deviations from the peak (hz > 0).
+  struct SlopeOffset {
+    Vec3 local;
+    double uv2, hz;
+  };
+  SlopeOffset slope_offset(const Vec3& world) const {
+    const Frame& f = slopes_->frame;  // to_local(), inline: once per node visited
+    const Vec3 local(f.x.dot(world), f.y.dot(world), f.z.dot(world));
+    const Vec3 h = local + slopes_->wo;
+    const double u = h.x() * inv_sx_, v = h.y() * inv_sy_;
+    return {local, u * u + v * v, h.z()};
+  }
+  // Per level of grown_window_sum(), in deviations: a node is fine enough for where it is
+  // (at most base_step_ times max(1, growth_ * its distance from the peak, from its side nearest
+  // the peak)) beyond `fine`, and in the window within `window`; squared.
+  struct LevelReach {
+    double fine2, window2;
+  };
+  void grow_levels() {
+    for (int l = base_level_; l <= level_; ++l) {
+      const double angle = env_.node_angle(l), margin = angle * inv_minor_;
+      const double fine = angle <= base_step_ ? 0.0 : margin + angle / (base_step_ * growth_);
+      const double window = reach_ + 1.5 * margin;
+      levels_[l] = {fine * fine, window * window};
+    }
+  }
+
+  // window_sum() with nodes that grow with their distance from the peak (KernelShape::
+  // node_growth): each node of the window's segments (level_, the coarsest the window needs) is
+  // refined into its children, down to base_level_ (and the pieces of its texels), while it is
+  // wider than LevelReach::fine allows. The nodes kept are in a fixed order; K at them kChunk at
+  // a time as in slope_window_sum().
+  Sum grown_window_sum(QuadratureScratch& s) const {
+    s.directions.resize(6 * kChunk);
+    s.weight.resize(kChunk);
+    s.kernel.resize(kChunk);
+    if (base_split_ > 1) s.angles.use(env_.width(0) * base_split_, env_.height(0) * base_split_);
+    Grown g{s, zero<Sum>(), 0};
+    for (const RowSegment& segment : s.segments)
+      for (int xs = segment.x0; xs <= segment.x1; ++xs)
+        visit_grown(level_, wrap(xs), segment.row, g);
+    add_local_chunk(g);
+    return g.sum;
+  }
+  struct Grown {
+    QuadratureScratch& s;
+    Sum sum;
+    Eigen::Index n;  // nodes in the chunk
+  };
+  void visit_grown(int l, int x, int y, Grown& g) const {
+    const Vec3 c = env_.centroid(l, x, y);
+    const SlopeOffset o = slope_offset(c);
+    if (o.hz <= 0) return;  // no half vector: outside any window
+    const double hz2 = o.hz * o.hz;
+    const bool finest = l == base_level_ && (l > 0 || base_split_ == 1);
+    if (!finest && o.uv2 < levels_[l].fine2 * hz2) {
+      if (l == 0) return visit_pieces(x, y, g);
+      for (int fy = 2 * y; fy < std::min(2 * y + 2, env_.height(l - 1)); ++fy)
+        for (int fx = 2 * x; fx < std::min(2 * x + 2, env_.width(l - 1)); ++fx)
+          visit_grown(l - 1, fx, fy, g);
+      return;
+    }
+    if (o.uv2 <= levels_[l].window2 * hz2) push_node(c, o.local, env_.weight(l, x, y), g);
+  }
+  // The base_split_^2 pieces of texel (x, y) in the window, as for_each_node() cuts them.
+  void visit_pieces(int x, int y, Grown& g) const {
+    const int n = base_split_;
+    const double radius = reach_ + 1.5 * env_.node_angle(0) / n * inv_minor_;
+    for (int sub_y = 0; sub_y < n; ++sub_y) {
+      const PieceRow texel(env_, x, y, sub_y, n);
+      const Vec2 theta = g.s.angles.row(y * n + sub_y);
+      for (int sub = 0; sub < n; ++sub) {
+        const Vec2 phi = g.s.angles.column(x * n + sub);
+        const Vec3 w(-theta.x() * phi.x(), theta.y(), theta.x() * phi.y());
+        const SlopeOffset o = slope_offset(w);
+        if (o.hz > 0 && o.uv2 <= radius * radius * o.hz * o.hz)
+          push_node(w, o.local, texel.weight(sub), g);
+      }
+    }
+  }
+  void push_node(const Vec3& world, const Vec3& local, const Rgb& weight, Grown& g) const {
+    double* d = g.s.directions.data();
+    for (int c = 0; c < 3; ++c)
+      d[c * kChunk + g.n] = world[c], d[(3 + c) * kChunk + g.n] = local[c];
+    g.s.weight[g.n] = weight;
+    if (++g.n == kChunk) add_local_chunk(g);
+  }
+  // Adds weight * K of the chunk's nodes, whose local directions are known, to the sum.
+  void add_local_chunk(Grown& g) const {
+    const Eigen::Index n = g.n;
+    double* world = g.s.directions.data();
+    double* local = world + 3 * kChunk;
+    if (n < kChunk) {  // values_local() takes y at local + n, z at local + 2n
+      std::copy(local + kChunk, local + kChunk + n, local + n);
+      std::copy(local + 2 * kChunk, local + 2 * kChunk + n, local + 2 * n);
+    }
+    double* k = g.s.kernel.data();
+    kernel_.values_local(local, n, k);
+    Sum total = g.sum;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (positive(k[i]) && visible_(Vec3(world[i], world[kChunk + i], world[2 * kChunk + i])))
+        total += weighted(g.s.weight[i], k[i]);
+    g.sum = total, g.n = 0;
   }
 
   int wrap(int xs) const {
@@ -509,9 +638,17 @@ class Quadrature {
     // lobes fall at least like Gaussians of their width there (exp(-98) at the default reach).
     const double margin = env_.node_angle(0);
     if (!in_window(t.centroid, margin, 4 * reach_)) return zero<Sum>();
-    if (hot_split_ == 1 || !in_window(t.centroid, margin, 2 * reach_))
+    int n = hot_split_;
+    if (growth_ > 0) {  // as fine as the nodes there, hot_texels_per_width times
+      const SlopeOffset o = slope_offset(t.centroid);
+      const double rho =
+          o.hz > 0 ? std::sqrt(o.uv2) / o.hz : std::numeric_limits<double>::infinity();
+      const double near = std::max(0.0, rho - margin * inv_minor_);
+      n = std::clamp(
+          static_cast<int>(std::ceil(margin / (hot_step_ * std::max(1.0, growth_ * near)))), 1, n);
+    }
+    if (n == 1 || !in_window(t.centroid, margin, 2 * reach_))
       return weighted(t.radiance, Value(value(t.centroid) * t.solid_angle));
-    const int n = hot_split_;
     Value sum = zero<Value>();
     for_each_texel_piece(env_.frame_of_texel(t.x, t.y), n, [&](const Vec3& w) { sum += value(w); });
     return weighted(t.radiance, Value(sum * (t.solid_angle / (n * n))));
@@ -540,6 +677,13 @@ class Quadrature {
   double major_width_, minor_width_, inv_major_, inv_minor_, reach_, node_angle_;
   int level_, split_, hot_split_, grid_w_, grid_h_;
   int hot_level_;  // hot texels merged by the nodes of this level (0: one by one)
+  double hot_step_;
+  // Nodes grown with their distance from the peak (grown_window_sum(); growth_ = 0: not): the
+  // node_growth, the finest nodes (a level, then pieces of texels) and their size.
+  double growth_ = 0, base_step_ = 0;
+  int base_level_ = 0, base_split_ = 1;
+  static constexpr int kMaxLevels = 24;        // pyramids of maps up to 2^24 texels wide
+  std::array<LevelReach, kMaxLevels> levels_;  // grow_levels(), base_level_ to level_
   Visible visible_;
 };
 

@@ -193,20 +193,17 @@ struct Renderer::Impl {
                      p.normal, p, s);
   }
 
-  // A lobe's integral at pixel p, in the pixel's frame and shaped as `shaping` at wo there (in
-  // its parts, if it has any), plus its mirror term: kernel(frame, wo, part) is the kernel of a
-  // part, add_mirror(sum, wo) adds the mirror term to the sum.
+  // A lobe's integral at pixel p, in the pixel's frame and shaped as `shaping` at wo there, plus
+  // its mirror term: kernel(frame, wo) is the lobe's kernel, add_mirror(sum, wo) adds the mirror
+  // term to the sum.
   template <typename Value, typename MakeKernel, typename AddMirror>
   Value lobe_pixel(const Lobe& shaping, const SurfacePoint& p, QuadratureScratch& s,
                    MakeKernel kernel, AddMirror add_mirror) const {
     const Frame frame = pixel_frame(p);
     const Vec3 wo = frame.to_local(kViewDirection);
     if (wo.z() <= 0) return zero<Value>();
-    Value sum = zero<Value>();
-    for (const KernelShape& local : lobe_shapes(shaping, wo)) {
-      const KernelShape shape = local.to_world(frame);
-      sum += integrate(kernel(frame, wo, shape.part), shape, p.normal, p, s);
-    }
+    const KernelShape shape = lobe_shape(shaping, wo).to_world(frame);
+    Value sum = integrate(kernel(frame, wo), shape, p.normal, p, s);
     add_mirror(sum, wo);
     return sum;
   }
@@ -216,9 +213,7 @@ struct Renderer::Impl {
                      QuadratureScratch& s) const {
     return lobe_pixel<Rgb>(
         any, p, s,
-        [&](const Frame& frame, const Vec3& wo, const std::optional<SlopeWeight>& part) {
-          return LobeKernel<L>(lobe, frame, wo, part);
-        },
+        [&](const Frame& frame, const Vec3& wo) { return LobeKernel<L>(lobe, frame, wo); },
         [&](Rgb& sum, const Vec3& wo) {
           if constexpr (MirrorLobe<L>) sum += lobe.mirror_weight(wo) * (*mirrored)[i];
         });
@@ -231,9 +226,7 @@ struct Renderer::Impl {
                          std::size_t i, QuadratureScratch& s) const {
     return lobe_pixel<BatchValue>(
         lobe, p, s,
-        [&](const Frame& frame, const Vec3& wo, const std::optional<SlopeWeight>& part) {
-          // Lobes rendered in parts have no Fresnel parameter (shares_quadrature()).
-          if (part) throw Error(ErrorCode::internal, "a batch of lobes rendered in parts");
+        [&](const Frame& frame, const Vec3& wo) {
           return FresnelBatchKernel<L>(lobe, params, frame, wo);
         },
         [&](BatchValue& sum, const Vec3& wo) {

@@ -35,7 +35,7 @@ using RenderError = LayerError<struct RenderErrorTag, ErrorCode::invalid_argumen
 // formula). A database's settings record it, so that a resumed build or a merge of shards never
 // mixes the images of two renderers; Render.ImagesAreThoseOfThisRevision holds it to reference
 // values of a few images.
-inline constexpr int kRendererRevision = 4;
+inline constexpr int kRendererRevision = 5;
 
 // Knobs of the quadrature (docs/RENDERER.md). The defaults meet the accuracy target: the error is
 // at most a tenth of the change a 10% parameter step makes. finer(4) is the reference.
