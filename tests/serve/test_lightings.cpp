@@ -149,8 +149,11 @@ TEST(Lightings, ShowsEachMapAsAPicture) {
   EXPECT_EQ(a.width, kEnvironmentPicture);
   EXPECT_EQ(a.height, kEnvironmentPicture / 2);
   // Exposed to a mean of mid grey: neither black nor white, and two maps differ.
-  EXPECT_GT(a.mean, 20);
-  EXPECT_LT(a.mean, 235);
+  for (const Picture& p : {a, b}) {
+    EXPECT_EQ(p.width, kEnvironmentPicture);
+    EXPECT_GT(p.mean, 20);
+    EXPECT_LT(p.mean, 235);
+  }
   EXPECT_NE(forest.body, courtyard.body);
   const ApiResponse bad =
       three().handle({"GET", "/api/environment", {{"display", "no such display"}}, ""});
