@@ -77,10 +77,16 @@ std::span<const HueWord> hue_words() {
 }
 
 std::string hue_word(double degrees) {
-  const HueWord* nearest = &kHueWords.front();
-  for (const HueWord& w : kHueWords)
-    if (hue_gap(hue_angle(w), degrees) < hue_gap(hue_angle(*nearest), degrees)) nearest = &w;
-  return nearest->words;
+  // The words' hue angles, computed once: every colour offer asks.
+  static const std::array<double, kHueWords.size()> angles = [] {
+    std::array<double, kHueWords.size()> a{};
+    for (std::size_t i = 0; i < a.size(); ++i) a[i] = hue_angle(kHueWords[i]);
+    return a;
+  }();
+  std::size_t nearest = 0;
+  for (std::size_t i = 1; i < angles.size(); ++i)
+    if (hue_gap(angles[i], degrees) < hue_gap(angles[nearest], degrees)) nearest = i;
+  return kHueWords[nearest].words;
 }
 
 namespace {

@@ -51,14 +51,17 @@ void LightingsApi::release_memory() const {
   for (const auto& api : apis_) api->release_memory();
 }
 
-std::size_t LightingsApi::lighting_of(const ApiRequest& request, const char* key) const {
-  const auto it = request.query.find(key);
-  if (it == request.query.end()) return 0;
-  const auto found = std::find(ids_.begin(), ids_.end(), it->second);
+std::size_t LightingsApi::index_of(const std::string& id, const char* field) const {
+  const auto found = std::find(ids_.begin(), ids_.end(), id);
   if (found == ids_.end())
     throw request_error(
-        key, "no lighting " + shown(json(it->second)) + " (expected one of: " + join(ids_) + ")");
+        field, "no lighting " + shown(json(id)) + " (expected one of: " + join(ids_) + ")");
   return std::size_t(found - ids_.begin());
+}
+
+std::size_t LightingsApi::lighting_of(const ApiRequest& request) const {
+  const auto it = request.query.find("lighting");
+  return it == request.query.end() ? 0 : index_of(it->second, "lighting");
 }
 
 ApiResponse LightingsApi::handle(const ApiRequest& request) const {
@@ -70,7 +73,7 @@ ApiResponse LightingsApi::handle(const ApiRequest& request) const {
   if (request.path == "/api/carry") return method_not_allowed(request.method, request.path, "POST");
   std::size_t lighting = 0;
   try {
-    lighting = lighting_of(request, "lighting");
+    lighting = lighting_of(request);
   } catch (const Error& e) {
     return error_response(400, e.what());
   }
@@ -104,12 +107,8 @@ ApiResponse LightingsApi::carry(const ApiRequest& request) const {
     const json body = parse_body(request.body, {"material", "from"});
     const std::optional<std::string> from_id = optional_string(body, "from");
     if (!from_id) throw request_error("from", "missing");
-    const auto from_at = std::find(ids_.begin(), ids_.end(), *from_id);
-    if (from_at == ids_.end())
-      throw request_error("from", "no lighting " + shown(json(*from_id)) +
-                                      " (expected one of: " + join(ids_) + ")");
-    const Navigator& from = apis_[std::size_t(from_at - ids_.begin())]->navigator();
-    const Navigator& to = apis_[lighting_of(request, "lighting")]->navigator();
+    const Navigator& from = apis_[index_of(*from_id, "from")]->navigator();
+    const Navigator& to = apis_[lighting_of(request)]->navigator();
     const Material m = read_material(from.database(), require(body, "material"));
     if (to.database().embedding(m.model))
       return json_response({{"material", material_json(m)}, {"carried", "same"}});

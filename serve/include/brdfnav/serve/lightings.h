@@ -40,8 +40,11 @@ class LightingsApi {
  private:
   ApiResponse lightings() const;
   ApiResponse carry(const ApiRequest& request) const;
-  // The index of the request's `lighting` (0 when absent); Error (invalid_argument) otherwise.
-  std::size_t lighting_of(const ApiRequest& request, const char* key) const;
+  // The index of lighting `id`; Error (invalid_argument) naming `field` and the lightings when
+  // there is none.
+  std::size_t index_of(const std::string& id, const char* field) const;
+  // The index of the request's `lighting` query parameter (0 when absent).
+  std::size_t lighting_of(const ApiRequest& request) const;
 
   std::vector<std::unique_ptr<NavigatorApi>> apis_;
   std::vector<std::string> ids_;
